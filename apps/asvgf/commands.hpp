@@ -1,0 +1,12 @@
+// Subcommands of the `asvgf` tool: each registers its options on the CLI and runs when chosen.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace asvgf::cli {
+
+// Registers `info` on the app; the returned function runs it and gives the exit code.
+std::function<int()> add_info_command(CLI::App& app);
+
+}  // namespace asvgf::cli

@@ -1,0 +1,48 @@
+// asvgf: command-line entry point. Parses the subcommand and its options, runs it, maps errors to
+// exit codes: 0 success, 1 runtime failure (message on stderr), 2 bad command line.
+#include <cstdio>
+#include <exception>
+#include <functional>
+#include <vector>
+
+#include "commands.hpp"
+#include "hal/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"asvgf: real-time A-SVGF denoising of path-traced frames on a thin HAL (Vulkan backend)", "asvgf"};
+  app.set_version_flag("--version", std::string("asvgf ") + ASVGF_VERSION);
+  app.require_subcommand(0, 1);
+  app.fallthrough(false);
+
+  std::vector<std::pair<CLI::App*, std::function<int()>>> commands;
+  auto info = asvgf::cli::add_info_command(app);
+  commands.emplace_back(app.get_subcommand("info"), info);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "asvgf: error: %s\nRun 'asvgf --help' for the subcommands and options.\n", e.what());
+    return 2;
+  }
+
+  for (auto& [sub, run] : commands) {
+    if (!sub->parsed()) continue;
+    try {
+      return run();
+    } catch (const hal::Error& e) {
+      std::fprintf(stderr, "asvgf %s: %s\n", sub->get_name().c_str(), e.what());
+      return 1;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "asvgf %s: error: %s\n", sub->get_name().c_str(), e.what());
+      return 1;
+    }
+  }
+  std::fprintf(stderr, "asvgf: error: no subcommand given\n%s", app.help().c_str());
+  return 2;
+}
