@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <string_view>
 
@@ -55,6 +56,7 @@ class CommandList {
 
   virtual void barrier(std::span<const Barrier> barriers) = 0;
   void barrier(const Barrier& b) { barrier(std::span<const Barrier>(&b, 1)); }
+  void barrier(std::initializer_list<Barrier> list) { barrier(std::span<const Barrier>(list.begin(), list.size())); }
 
   virtual void dispatch(const DispatchDesc& desc) = 0;
 
