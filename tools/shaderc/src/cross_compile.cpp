@@ -1,0 +1,47 @@
+#include "cross_compile.hpp"
+
+#include <spirv_glsl.hpp>
+#include <spirv_hlsl.hpp>
+#include <spirv_msl.hpp>
+
+namespace shaderc {
+
+std::string to_glsl(const std::vector<std::uint32_t>& spirv, bool es) {
+  spirv_cross::CompilerGLSL compiler(spirv);
+  auto options = compiler.get_common_options();
+  options.version = es ? 310 : 450;
+  options.es = es;
+  options.vulkan_semantics = false;
+  compiler.set_common_options(options);
+
+  // texelFetch needs no sampler, but GL only has combined samplers: pair each image with a dummy
+  // one and give the pair the image's name and binding.
+  const auto dummy = compiler.build_dummy_sampler_for_combined_images();
+  if (dummy != 0) compiler.set_decoration(dummy, spv::DecorationDescriptorSet, 0);
+  compiler.build_combined_image_samplers();
+  for (const auto& pair : compiler.get_combined_image_samplers()) {
+    compiler.set_name(pair.combined_id, compiler.get_name(pair.image_id));
+    compiler.set_decoration(pair.combined_id, spv::DecorationBinding,
+                            compiler.get_decoration(pair.image_id, spv::DecorationBinding));
+  }
+  return compiler.compile();
+}
+
+std::string to_hlsl(const std::vector<std::uint32_t>& spirv, bool ray_query) {
+  spirv_cross::CompilerHLSL compiler(spirv);
+  auto options = compiler.get_hlsl_options();
+  options.shader_model = ray_query ? 65 : 60;
+  compiler.set_hlsl_options(options);
+  return compiler.compile();
+}
+
+std::string to_msl(const std::vector<std::uint32_t>& spirv, bool ray_query) {
+  spirv_cross::CompilerMSL compiler(spirv);
+  auto options = compiler.get_msl_options();
+  if (ray_query) options.set_msl_version(2, 3);
+  else options.set_msl_version(2, 1);
+  compiler.set_msl_options(options);
+  return compiler.compile();
+}
+
+}  // namespace shaderc

@@ -1,0 +1,54 @@
+#include "portability.hpp"
+
+namespace shaderc {
+namespace {
+
+// WebGPU's default limits; Dawn rejects a pipeline over them unless the device asked for more.
+constexpr std::size_t kWebGpuStorageBuffers = 8;   // maxStorageBuffersPerShaderStage
+constexpr std::size_t kWebGpuStorageTextures = 4;  // maxStorageTexturesPerShaderStage
+
+bool is_r32(const std::string& format) { return format == "r32f" || format == "r32ui" || format == "r32i"; }
+
+}  // namespace
+
+std::vector<std::string> check_portability(const Reflection& r, const std::string& shader, const std::string& source) {
+  std::vector<std::string> errors;
+  auto fail = [&](const std::string& rule, const std::string& detail, const std::string& rejected_by) {
+    errors.push_back(source + ": error: " + shader + ": portability rule '" + rule + "' broken: " + detail +
+                     "; rejected by " + rejected_by);
+  };
+  // Variants with ray queries have no WGSL or ESSL output, so only the HAL rules apply to them.
+  const bool web = !r.uses_ray_query;
+
+  std::size_t storage_buffers = 0, storage_images = 0;
+  for (const auto& b : r.bindings) {
+    if (b.kind == Kind::StorageBuffer) ++storage_buffers;
+    if (b.kind != Kind::StorageImage) continue;
+    ++storage_images;
+    if (b.access == Access::ReadWrite && !is_r32(b.format))
+      fail("an image both read and written must be r32f, r32ui or r32i",
+           "storage image '" + b.name + "' (" + b.format +
+               ") is neither readonly nor writeonly; read it as a texture2D with texelFetch and write a "
+               "writeonly image, or use an r32 format",
+           "WGSL (WebGPU read_write storage textures are r32 only) and ESSL 310 (GLES 3.1 read-write images are "
+           "r32 only)");
+  }
+  if (web && r.uses_image_atomics)
+    fail("no image atomics in passes that run on WebGPU", "the shader uses an atomic on a storage image",
+         "WGSL (WebGPU has no storage texture atomics) and ESSL 310 (needs OES_shader_image_atomic)");
+  if (web && storage_buffers > kWebGpuStorageBuffers)
+    fail("stay within WebGPU's default limits",
+         std::to_string(storage_buffers) + " storage buffers (maxStorageBuffersPerShaderStage is 8)", "WGSL (WebGPU)");
+  if (web && storage_images > kWebGpuStorageTextures)
+    fail("stay within WebGPU's default limits",
+         std::to_string(storage_images) + " storage images (maxStorageTexturesPerShaderStage is 4)", "WGSL (WebGPU)");
+  if (r.uniform_block_count > 1)
+    fail("pass parameters in one uniform block", std::to_string(r.uniform_block_count) + " uniform blocks",
+         "the HAL (DispatchDesc::uniforms fills one block)");
+  for (const auto& what : r.unsupported)
+    fail("bind only uniform/storage buffers, texture2D, storage images and acceleration structures", what,
+         "the HAL (hal::BindingKind has no kind for it)");
+  return errors;
+}
+
+}  // namespace shaderc

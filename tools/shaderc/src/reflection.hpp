@@ -1,0 +1,55 @@
+// reflection.hpp: what the generated header and the JSON say about a shader, read from the final
+// SPIR-V with SPIRV-Cross. Mirrors hal::ShaderInfo (hal/shader.hpp) with owning strings.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace shaderc {
+
+enum class Kind { UniformBuffer, StorageBuffer, SampledImage, StorageImage, AccelerationStructure };
+enum class Access { Read, Write, ReadWrite };
+const char* kind_name(Kind kind);      // the hal::BindingKind enumerator
+const char* access_name(Access access);  // the hal::Access enumerator
+
+struct Binding {
+  std::uint32_t set = 0;
+  std::uint32_t binding = 0;
+  Kind kind = Kind::StorageBuffer;
+  Access access = Access::Read;
+  std::string name;        // GLSL instance name of a block, or the variable name
+  std::string format;      // storage images: GLSL format qualifier ("rgba16f"), else empty
+  std::string hal_format;  // storage images: hal::Format enumerator ("RGBA16F"), else "Undefined"
+};
+
+struct UniformMember {
+  std::string name;
+  std::uint32_t offset = 0;
+  std::uint32_t size = 0;
+};
+
+struct SpecConstant {
+  std::string name;
+  std::uint32_t id = 0;
+  std::uint32_t default_value = 0;
+};
+
+struct Reflection {
+  std::array<std::uint32_t, 3> workgroup_size{1, 1, 1};
+  std::vector<Binding> bindings;  // sorted by (set, binding)
+  std::uint32_t uniform_block_count = 0;
+  std::uint32_t uniform_block_size = 0;
+  std::vector<UniformMember> uniform_members;
+  std::vector<SpecConstant> spec_constants;
+  bool uses_ray_query = false;
+  bool uses_image_atomics = false;
+  // Resources the HAL has no binding kind for (push constants, samplers, ...), described.
+  std::vector<std::string> unsupported;
+};
+
+// Throws ToolError naming `shader` if SPIRV-Cross cannot parse the module.
+Reflection reflect(const std::vector<std::uint32_t>& spirv, const std::string& shader);
+
+}  // namespace shaderc

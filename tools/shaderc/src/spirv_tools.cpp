@@ -1,0 +1,39 @@
+#include "spirv_tools.hpp"
+
+#include <spirv-tools/libspirv.hpp>
+#include <spirv-tools/optimizer.hpp>
+
+#include "error.hpp"
+
+namespace shaderc {
+namespace {
+
+constexpr spv_target_env kEnv = SPV_ENV_VULKAN_1_2;
+
+spvtools::MessageConsumer collect(std::string& log) {
+  return [&log](spv_message_level_t, const char*, const spv_position_t& pos, const char* message) {
+    log += "  word " + std::to_string(pos.index) + ": " + message + "\n";
+  };
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> optimize_spirv(const std::vector<std::uint32_t>& spirv, const std::string& shader) {
+  std::string log;
+  spvtools::Optimizer optimizer(kEnv);
+  optimizer.SetMessageConsumer(collect(log));
+  optimizer.RegisterPerformancePasses();
+  std::vector<std::uint32_t> out;
+  if (!optimizer.Run(spirv.data(), spirv.size(), &out))
+    throw ToolError(shader + ": error: SPIR-V optimisation failed:\n" + log);
+  return out;
+}
+
+void validate_spirv(const std::vector<std::uint32_t>& spirv, const std::string& shader) {
+  std::string log;
+  spvtools::SpirvTools tools(kEnv);
+  tools.SetMessageConsumer(collect(log));
+  if (!tools.Validate(spirv)) throw ToolError(shader + ": error: emitted SPIR-V fails validation (vulkan1.2):\n" + log);
+}
+
+}  // namespace shaderc
