@@ -29,7 +29,9 @@ class Includer final : public glslang::TShader::Includer {
   IncludeResult* includeSystem(const char* name, const char*, size_t) override {
     for (const auto& dir : dirs_)
       if (auto* r = open(dir / name)) return r;
-    return nullptr;  // glslang reports "could not process include directive"
+    // An empty headerName reports failure; glslang 12 crashes on a nullptr result.
+    auto* why = new std::string("file not found next to the including file or in the include directories");
+    return new IncludeResult("", why->data(), why->size(), why);
   }
   void releaseInclude(IncludeResult* result) override {
     delete static_cast<std::string*>(result->userData);

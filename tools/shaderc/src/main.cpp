@@ -41,9 +41,10 @@ void cross_target(const Options& o, bool ray_query, const std::string& ext, cons
     write_if_changed(o.output(ext), fn());
     targets.emitted[ext] = o.output(ext).filename().string();
   } catch (const spirv_cross::CompilerError& e) {
+    const std::string file = fs::absolute(o.source).string();
     const std::string what = o.full_name() + ": " + target + ": SPIRV-Cross cannot translate it: " + e.what();
-    if (!ray_query) throw ToolError(o.source.string() + ": error: " + what);
-    std::cerr << o.source.string() << ": warning: " << what << "; " << target << " is not emitted for this variant\n";
+    if (!ray_query) throw ToolError(file + ": error: " + what);
+    std::cerr << file << ": warning: " << what << "; " << target << " is not emitted for this variant\n";
     targets.skipped[ext] = std::string("SPIRV-Cross cannot translate ray queries to ") + target + ": " + e.what();
     remove_stale(o.output(ext));
   }
@@ -55,7 +56,7 @@ void skip(const Options& o, Targets& targets, const std::string& ext, const std:
 }
 
 int run(const Options& o) {
-  const std::string source = o.source.string();
+  const std::string source = fs::absolute(o.source).string();
   GlslResult glsl = compile_glsl(o);
   for (const auto& w : glsl.warnings) std::cerr << w << "\n";
 
