@@ -29,7 +29,12 @@ DeviceType device_type(VkPhysicalDeviceType type) {
 }  // namespace
 
 AdapterReport describe_adapter(VkPhysicalDevice physical, std::uint32_t index) {
+  VkPhysicalDeviceMaintenance4Properties maintenance4{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_PROPERTIES};
   VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+  VkPhysicalDeviceProperties basic{};
+  vkGetPhysicalDeviceProperties(physical, &basic);
+  // Maintenance4 properties exist only on Vulkan 1.3 devices (or with the extension).
+  if (basic.apiVersion >= VK_API_VERSION_1_3) driver.pNext = &maintenance4;
   VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES, &driver};
   VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
   vkGetPhysicalDeviceProperties2(physical, &props);
@@ -83,7 +88,7 @@ AdapterReport describe_adapter(VkPhysicalDevice physical, std::uint32_t index) {
   caps.subgroup_size = subgroup.subgroupSize;
   caps.max_image_dimension = p.limits.maxImageDimension2D;
   caps.max_storage_buffer_range = p.limits.maxStorageBufferRange;
-  caps.max_buffer_size = p.limits.maxStorageBufferRange;
+  caps.max_buffer_size = maintenance4.maxBufferSize ? maintenance4.maxBufferSize : p.limits.maxStorageBufferRange;
   return report;
 }
 

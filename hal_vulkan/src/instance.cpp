@@ -18,6 +18,16 @@ bool has_layer(const char* name) {
   return false;
 }
 
+bool has_instance_extension(const char* name) {
+  std::uint32_t count = 0;
+  vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> props(count);
+  vkEnumerateInstanceExtensionProperties(nullptr, &count, props.data());
+  for (const auto& p : props)
+    if (std::strcmp(p.extensionName, name) == 0) return true;
+  return false;
+}
+
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
 }  // namespace
@@ -29,14 +39,20 @@ Instance::Instance(const InstanceOptions& options) : on_message_(options.on_mess
 
   std::vector<const char*> layers;
   std::vector<const char*> extensions;
-  for (const auto& e : options.extensions) extensions.push_back(e.c_str());
+  for (const auto& e : options.extensions) {
+    if (!has_instance_extension(e.c_str()))
+      throw Error(ErrorKind::Unsupported, e, "the Vulkan instance extension was asked for but the loader lacks it");
+    if (e != VK_EXT_DEBUG_UTILS_EXTENSION_NAME) extensions.push_back(e.c_str());
+  }
   if (options.validation) {
     if (!has_layer(kValidationLayer))
       throw Error(ErrorKind::Unsupported, kValidationLayer,
                   "validation was asked for but the layer is not installed (Debian package vulkan-validationlayers)");
     layers.push_back(kValidationLayer);
-    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   }
+  // Debug utils give object names and command labels in validation messages and captures.
+  debug_utils_ = options.validation || has_instance_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  if (debug_utils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
 
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "asvgf";

@@ -30,10 +30,12 @@ class Instance {
 
   VkInstance handle() const { return instance_; }
   std::vector<VkPhysicalDevice> physical_devices() const;
+  bool debug_utils() const { return debug_utils_; }
 
  private:
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  bool debug_utils_ = false;
   std::function<void(const std::string&)> on_message_;
   static VKAPI_ATTR VkBool32 VKAPI_CALL on_debug(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                  VkDebugUtilsMessageTypeFlagsEXT types,

@@ -1,0 +1,279 @@
+// Acceleration structures: BLAS from triangle buffers, TLAS from instances copied at record time,
+// builds and in-place updates, each structure owning its scratch buffer.
+#include <cstring>
+#include <string>
+
+#include "check.hpp"
+#include "command_list.hpp"
+#include "device.hpp"
+
+namespace hal::vulkan {
+namespace {
+
+VkAccelerationStructureGeometryKHR triangles(VkDeviceAddress vertices, std::uint32_t vertex_count,
+                                             VkDeviceAddress indices) {
+  VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+  geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
+  // Opaque: ray queries commit the closest triangle without any shader-side candidate handling.
+  geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
+  auto& t = geometry.geometry.triangles;
+  t.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
+  t.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
+  t.vertexData.deviceAddress = vertices;
+  t.vertexStride = 12;
+  t.maxVertex = vertex_count - 1;
+  t.indexType = VK_INDEX_TYPE_UINT32;
+  t.indexData.deviceAddress = indices;
+  return geometry;
+}
+
+VkAccelerationStructureGeometryKHR instances(VkDeviceAddress data) {
+  VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+  geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+  geometry.geometry.instances.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+  geometry.geometry.instances.arrayOfPointers = VK_FALSE;
+  geometry.geometry.instances.data.deviceAddress = data;
+  return geometry;
+}
+
+VkBuildAccelerationStructureFlagsKHR build_flags(bool allow_update) {
+  return VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
+         (allow_update ? VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR : 0);
+}
+
+}  // namespace
+
+namespace {
+
+// Storage and scratch of a new structure, sized from the build-size query.
+void create_storage(VulkanDevice& device, AccelObject& object, const VkAccelerationStructureBuildGeometryInfoKHR& info,
+                    std::uint32_t max_primitives) {
+  VkAccelerationStructureBuildSizesInfoKHR sizes{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
+  device.fn().accel_sizes(device.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info, &max_primitives,
+                          &sizes);
+  VkPhysicalDeviceAccelerationStructurePropertiesKHR props{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
+  VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &props};
+  vkGetPhysicalDeviceProperties2(device.physical(), &props2);
+  const VkDeviceSize scratch_alignment = std::max<VkDeviceSize>(props.minAccelerationStructureScratchOffsetAlignment, 1);
+
+  auto make_buffer = [&](VkDeviceSize size, VkBufferUsageFlags usage, const std::string& name, VkBuffer* buffer,
+                         Allocation* memory) {
+    VkBufferCreateInfo info_buffer{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info_buffer.size = size;
+    info_buffer.usage = usage | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+    device.check_result(vkCreateBuffer(device.device(), &info_buffer, nullptr, buffer), "vkCreateBuffer", name);
+    device.set_name(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<std::uint64_t>(*buffer), name);
+    VkMemoryRequirements requirements;
+    vkGetBufferMemoryRequirements(device.device(), *buffer, &requirements);
+    *memory = device.allocator().allocate(requirements, MemoryUse::GpuOnly, ResourceClass::Buffer, name);
+    device.check_result(vkBindBufferMemory(device.device(), *buffer, memory->memory, memory->offset),
+                        "vkBindBufferMemory", name);
+    VkBufferDeviceAddressInfo address{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
+    address.buffer = *buffer;
+    return vkGetBufferDeviceAddress(device.device(), &address);
+  };
+  make_buffer(sizes.accelerationStructureSize, VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR, object.name,
+              &object.buffer, &object.memory);
+  const VkDeviceSize scratch = std::max(sizes.buildScratchSize, sizes.updateScratchSize) + scratch_alignment;
+  const VkDeviceAddress base = make_buffer(scratch, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, object.name + " scratch",
+                                           &object.scratch, &object.scratch_memory);
+  object.scratch_address = (base + scratch_alignment - 1) / scratch_alignment * scratch_alignment;
+
+  VkAccelerationStructureCreateInfoKHR create{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
+  create.buffer = object.buffer;
+  create.size = sizes.accelerationStructureSize;
+  create.type = info.type;
+  device.check_result(device.fn().create_accel(device.device(), &create, nullptr, &object.handle),
+                      "vkCreateAccelerationStructureKHR", object.name);
+  device.set_name(VK_OBJECT_TYPE_ACCELERATION_STRUCTURE_KHR, reinterpret_cast<std::uint64_t>(object.handle),
+                  object.name);
+  VkAccelerationStructureDeviceAddressInfoKHR address{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
+  address.accelerationStructure = object.handle;
+  object.address = device.fn().accel_address(device.device(), &address);
+}
+
+}  // namespace
+
+void VulkanDevice::destroy_accel(AccelObject& object) {
+  if (object.handle) fn_.destroy_accel(device_, object.handle, nullptr);
+  if (object.buffer) vkDestroyBuffer(device_, object.buffer, nullptr);
+  if (object.scratch) vkDestroyBuffer(device_, object.scratch, nullptr);
+  allocator_->free(object.memory);
+  allocator_->free(object.scratch_memory);
+  object = AccelObject{};
+}
+
+AccelHandle VulkanDevice::create_blas(const BlasDesc& desc) {
+  check_alive();
+  if (!capabilities().acceleration_structures)
+    throw Error(ErrorKind::Unsupported, desc.name, "acceleration structures are not supported by " + adapter().name);
+  if (desc.vertex_count == 0 || desc.triangle_count == 0)
+    throw Error(ErrorKind::InvalidDescriptor, desc.name,
+                "BLAS needs at least one vertex and one triangle (got " + std::to_string(desc.vertex_count) +
+                    " vertices, " + std::to_string(desc.triangle_count) + " triangles)");
+  const BufferObject& vertices = buffers.get(desc.vertices.id, "buffer");
+  const BufferObject& indices = buffers.get(desc.indices.id, "buffer");
+  for (const BufferObject* b : {&vertices, &indices})
+    if (!has(b->desc.usage, BufferUsage::AccelBuildInput))
+      throw Error(ErrorKind::InvalidUsage, b->name, "BLAS '" + desc.name + "' input needs AccelBuildInput usage");
+  if (vertices.desc.size < std::uint64_t{desc.vertex_count} * 12)
+    throw Error(ErrorKind::InvalidDescriptor, desc.name,
+                "vertex buffer '" + vertices.name + "' is smaller than " + std::to_string(desc.vertex_count) + " float3");
+  if (indices.desc.size < std::uint64_t{desc.triangle_count} * 12)
+    throw Error(ErrorKind::InvalidDescriptor, desc.name,
+                "index buffer '" + indices.name + "' is smaller than " + std::to_string(desc.triangle_count) +
+                    " triangles of uint32");
+
+  AccelObject object;
+  object.name = desc.name;
+  object.blas = desc;
+  const auto geometry = triangles(0, desc.vertex_count, 0);
+  VkAccelerationStructureBuildGeometryInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
+  info.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
+  info.flags = build_flags(desc.allow_update);
+  info.geometryCount = 1;
+  info.pGeometries = &geometry;
+  try {
+    create_storage(*this, object, info, desc.triangle_count);
+  } catch (...) {
+    destroy_accel(object);
+    throw;
+  }
+  return AccelHandle{accels.add(std::move(object))};
+}
+
+AccelHandle VulkanDevice::create_tlas(const TlasDesc& desc) {
+  check_alive();
+  if (!capabilities().acceleration_structures)
+    throw Error(ErrorKind::Unsupported, desc.name, "acceleration structures are not supported by " + adapter().name);
+  if (desc.max_instances == 0 || desc.max_instances > (1u << 24))
+    throw Error(ErrorKind::InvalidDescriptor, desc.name,
+                "TLAS max_instances " + std::to_string(desc.max_instances) + " is not in 1..16777216");
+  AccelObject object;
+  object.name = desc.name;
+  object.top = true;
+  object.tlas = desc;
+  const auto geometry = instances(0);
+  VkAccelerationStructureBuildGeometryInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
+  info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
+  info.flags = build_flags(desc.allow_update);
+  info.geometryCount = 1;
+  info.pGeometries = &geometry;
+  try {
+    create_storage(*this, object, info, desc.max_instances);
+  } catch (...) {
+    destroy_accel(object);
+    throw;
+  }
+  return AccelHandle{accels.add(std::move(object))};
+}
+
+void VulkanDevice::destroy(AccelHandle handle) {
+  AccelObject& object = accels.get(handle.id, "acceleration structure");
+  destroy_accel(object);
+  accels.erase(handle.id);
+}
+
+// ---- Recording ----------------------------------------------------------------------------------
+
+void VulkanCommandList::scratch_barrier(VkBuffer scratch) {
+  // Successive builds of one structure share its scratch: order them (write-after-write).
+  VkBufferMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+  barrier.srcStageMask = barrier.dstStageMask = VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR;
+  barrier.srcAccessMask = barrier.dstAccessMask =
+      VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR | VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.buffer = scratch;
+  barrier.size = VK_WHOLE_SIZE;
+  VkDependencyInfo info{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  info.bufferMemoryBarrierCount = 1;
+  info.pBufferMemoryBarriers = &barrier;
+  vkCmdPipelineBarrier2(cmd_, &info);
+}
+
+void VulkanCommandList::build_blas(AccelHandle handle, bool update) {
+  VkCommandBuffer cmd = recording();
+  AccelObject& object = device_.accels.get(handle.id, "acceleration structure");
+  if (object.top)
+    throw Error(ErrorKind::InvalidUsage, object.name, "build_blas on a top-level structure (in '" + name_ + "')");
+  if (update && !object.blas.allow_update)
+    throw Error(ErrorKind::InvalidUsage, object.name, "update requested but the BLAS was created without allow_update");
+  if (update && !object.recorded_build)
+    throw Error(ErrorKind::InvalidUsage, object.name, "update requested before any build was recorded");
+  const BufferObject& vertices = device_.buffers.get(object.blas.vertices.id, "buffer");
+  const BufferObject& indices = device_.buffers.get(object.blas.indices.id, "buffer");
+  const auto geometry = triangles(vertices.address, object.blas.vertex_count, indices.address);
+  VkAccelerationStructureBuildGeometryInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
+  info.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
+  info.flags = build_flags(object.blas.allow_update);
+  info.mode = update ? VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR : VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+  info.srcAccelerationStructure = update ? object.handle : VK_NULL_HANDLE;
+  info.dstAccelerationStructure = object.handle;
+  info.geometryCount = 1;
+  info.pGeometries = &geometry;
+  info.scratchData.deviceAddress = object.scratch_address;
+  VkAccelerationStructureBuildRangeInfoKHR range{object.blas.triangle_count, 0, 0, 0};
+  const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
+  scratch_barrier(object.scratch);
+  device_.fn().cmd_build_accel(cmd, 1, &info, &ranges);
+  object.recorded_build = true;
+}
+
+void VulkanCommandList::build_tlas(AccelHandle handle, std::span<const TlasInstance> list, bool update) {
+  VkCommandBuffer cmd = recording();
+  AccelObject& object = device_.accels.get(handle.id, "acceleration structure");
+  if (!object.top)
+    throw Error(ErrorKind::InvalidUsage, object.name, "build_tlas on a bottom-level structure (in '" + name_ + "')");
+  if (list.size() > object.tlas.max_instances)
+    throw Error(ErrorKind::InvalidUsage, object.name,
+                std::to_string(list.size()) + " instances exceed max_instances " +
+                    std::to_string(object.tlas.max_instances));
+  if (update && (!object.tlas.allow_update || !object.recorded_build))
+    throw Error(ErrorKind::InvalidUsage, object.name,
+                "update needs allow_update and an earlier recorded build");
+  if (update && list.size() != object.built_instances)
+    throw Error(ErrorKind::InvalidUsage, object.name,
+                "update with " + std::to_string(list.size()) + " instances; the last build had " +
+                    std::to_string(object.built_instances) + " (an update keeps the instance count)");
+
+  // Instances are copied now into the upload ring, which the build reads by device address.
+  std::vector<VkAccelerationStructureInstanceKHR> data(std::max<std::size_t>(list.size(), 1));
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const TlasInstance& in = list[i];
+    const AccelObject& blas = device_.accels.get(in.blas.id, "acceleration structure");
+    if (blas.top)
+      throw Error(ErrorKind::InvalidUsage, object.name,
+                  "instance " + std::to_string(i) + " references top-level structure '" + blas.name + "'");
+    if (in.custom_index > 0xFFFFFFu)
+      throw Error(ErrorKind::InvalidUsage, object.name,
+                  "instance " + std::to_string(i) + " custom_index " + std::to_string(in.custom_index) +
+                      " does not fit in 24 bits");
+    VkAccelerationStructureInstanceKHR& out = data[i];
+    std::memcpy(out.transform.matrix, in.transform.data(), sizeof(out.transform.matrix));  // both row-major 3x4
+    out.instanceCustomIndex = in.custom_index;
+    out.mask = in.mask;
+    out.instanceShaderBindingTableRecordOffset = 0;
+    out.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
+    out.accelerationStructureReference = blas.address;
+  }
+  const VkDeviceSize offset = upload(data.data(), data.size() * sizeof(data[0]), 16);
+  const auto geometry = instances(device_.ring().address + offset);
+  VkAccelerationStructureBuildGeometryInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
+  info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
+  info.flags = build_flags(object.tlas.allow_update);
+  info.mode = update ? VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR : VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+  info.srcAccelerationStructure = update ? object.handle : VK_NULL_HANDLE;
+  info.dstAccelerationStructure = object.handle;
+  info.geometryCount = 1;
+  info.pGeometries = &geometry;
+  info.scratchData.deviceAddress = object.scratch_address;
+  VkAccelerationStructureBuildRangeInfoKHR range{static_cast<std::uint32_t>(list.size()), 0, 0, 0};
+  const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
+  scratch_barrier(object.scratch);
+  device_.fn().cmd_build_accel(cmd, 1, &info, &ranges);
+  object.recorded_build = true;
+  object.built_instances = static_cast<std::uint32_t>(list.size());
+}
+
+}  // namespace hal::vulkan

@@ -1,0 +1,127 @@
+// Compute pipelines from hal::ShaderInfo: descriptor set layouts from the reflection,
+// specialization constants by name, device capability checks.
+#include <map>
+#include <string>
+
+#include "check.hpp"
+#include "device.hpp"
+
+namespace hal::vulkan {
+
+VkDescriptorType descriptor_type(BindingKind kind) {
+  switch (kind) {
+    // Dynamic: every dispatch points it at its own slice of the upload ring.
+    case BindingKind::UniformBuffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+    case BindingKind::StorageBuffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    case BindingKind::SampledImage: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    case BindingKind::StorageImage: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    case BindingKind::AccelerationStructure: return VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+  }
+  return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+}
+
+PipelineHandle VulkanDevice::create_pipeline(const ComputePipelineDesc& desc) {
+  check_alive();
+  if (!desc.shader) throw Error(ErrorKind::InvalidDescriptor, desc.name, "pipeline has no shader");
+  const ShaderInfo& shader = *desc.shader;
+  if (shader.spirv.empty())
+    throw Error(ErrorKind::InvalidDescriptor, desc.name, "shader '" + std::string(shader.name) + "' has no SPIR-V");
+  if (shader.uses_ray_query && !capabilities().ray_query)
+    throw Error(ErrorKind::Unsupported, desc.name,
+                "shader '" + std::string(shader.name) + "' uses ray queries, which " + adapter().name + " lacks");
+  for (const auto& b : shader.bindings)
+    if (b.kind == BindingKind::AccelerationStructure && !capabilities().acceleration_structures)
+      throw Error(ErrorKind::Unsupported, desc.name,
+                  "shader binding '" + std::string(b.name) + "' is an acceleration structure, which " + adapter().name +
+                      " lacks");
+
+  // Specializations by name, checked against the reflection.
+  std::vector<VkSpecializationMapEntry> entries;
+  std::vector<std::uint32_t> values;
+  for (const auto& s : desc.specializations) {
+    const SpecConstant* found = nullptr;
+    for (const auto& c : shader.spec_constants)
+      if (c.name == s.name) found = &c;
+    if (!found) {
+      std::string known;
+      for (const auto& c : shader.spec_constants) known += (known.empty() ? "" : ", ") + std::string(c.name);
+      throw Error(ErrorKind::BindingMismatch, desc.name,
+                  "specialization '" + s.name + "' names no specialization constant of shader '" +
+                      std::string(shader.name) + "' (it has: " + (known.empty() ? "none" : known) + ")");
+    }
+    entries.push_back({found->id, static_cast<std::uint32_t>(values.size() * 4), 4});
+    values.push_back(s.value);
+  }
+
+  PipelineObject object;
+  object.name = desc.name;
+  object.shader = desc.shader;
+  VkDevice device = device_;
+  auto cleanup = [&] {
+    if (object.pipeline) vkDestroyPipeline(device, object.pipeline, nullptr);
+    if (object.layout) vkDestroyPipelineLayout(device, object.layout, nullptr);
+    for (auto l : object.set_layouts) vkDestroyDescriptorSetLayout(device, l, nullptr);
+  };
+  VkShaderModule module = VK_NULL_HANDLE;
+  try {
+    std::map<std::uint32_t, std::vector<VkDescriptorSetLayoutBinding>> sets;
+    std::uint32_t max_set = 0;
+    for (const auto& b : shader.bindings) {
+      if (b.kind == BindingKind::UniformBuffer) {
+        if (object.uniform)
+          throw Error(ErrorKind::InvalidDescriptor, desc.name,
+                      "shader '" + std::string(shader.name) + "' has more than one uniform block");
+        object.uniform = &b;
+      }
+      sets[b.set].push_back({b.binding, descriptor_type(b.kind), 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+      max_set = std::max(max_set, b.set);
+    }
+    if (object.uniform && shader.uniform_block_size == 0)
+      throw Error(ErrorKind::InvalidDescriptor, desc.name,
+                  "shader '" + std::string(shader.name) + "' has a uniform block of size 0");
+    const std::uint32_t set_count = shader.bindings.empty() ? 0 : max_set + 1;
+    for (std::uint32_t s = 0; s < set_count; ++s) {
+      const auto& bindings = sets[s];
+      VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+      info.bindingCount = static_cast<std::uint32_t>(bindings.size());
+      info.pBindings = bindings.data();
+      VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+      check_result(vkCreateDescriptorSetLayout(device_, &info, nullptr, &layout), "vkCreateDescriptorSetLayout", desc.name);
+      object.set_layouts.push_back(layout);
+    }
+    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layout_info.setLayoutCount = static_cast<std::uint32_t>(object.set_layouts.size());
+    layout_info.pSetLayouts = object.set_layouts.data();
+    check_result(vkCreatePipelineLayout(device_, &layout_info, nullptr, &object.layout), "vkCreatePipelineLayout",
+                 desc.name);
+
+    VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    module_info.codeSize = shader.spirv.size_bytes();
+    module_info.pCode = shader.spirv.data();
+    check_result(vkCreateShaderModule(device_, &module_info, nullptr, &module), "vkCreateShaderModule", desc.name);
+
+    VkSpecializationInfo specialization{};
+    specialization.mapEntryCount = static_cast<std::uint32_t>(entries.size());
+    specialization.pMapEntries = entries.data();
+    specialization.dataSize = values.size() * 4;
+    specialization.pData = values.data();
+    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = module;
+    info.stage.pName = "main";
+    info.stage.pSpecializationInfo = entries.empty() ? nullptr : &specialization;
+    info.layout = object.layout;
+    check_result(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &object.pipeline),
+                 "vkCreateComputePipelines", desc.name);
+    vkDestroyShaderModule(device_, module, nullptr);
+  } catch (...) {
+    if (module) vkDestroyShaderModule(device_, module, nullptr);
+    cleanup();
+    throw;
+  }
+  set_name(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<std::uint64_t>(object.pipeline), desc.name);
+  return PipelineHandle{pipelines.add(std::move(object))};
+}
+
+}  // namespace hal::vulkan

@@ -1,0 +1,188 @@
+// Synchronous host transfers through staging buffers. Each one is its own submission that waits
+// for the queue to drain; barriers at both ends order it against earlier and later submissions.
+#include <cstring>
+
+#include "check.hpp"
+#include "device.hpp"
+
+namespace hal::vulkan {
+namespace {
+
+// Earlier submissions' accesses complete (and writes are visible) before the transfer.
+void before_transfer(VkCommandBuffer cmd) {
+  VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+  barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  barrier.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
+  barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+  barrier.dstAccessMask = VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT;
+  VkDependencyInfo info{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  info.memoryBarrierCount = 1;
+  info.pMemoryBarriers = &barrier;
+  vkCmdPipelineBarrier2(cmd, &info);
+}
+
+// Transfer writes into staging memory become visible to the host.
+void transfer_to_host(VkCommandBuffer cmd) {
+  VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+  barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+  barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+  barrier.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+  barrier.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+  VkDependencyInfo info{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  info.memoryBarrierCount = 1;
+  info.pMemoryBarriers = &barrier;
+  vkCmdPipelineBarrier2(cmd, &info);
+}
+
+}  // namespace
+
+std::pair<VkBuffer, Allocation> VulkanDevice::create_staging(VkDeviceSize size, MemoryUse use, std::string_view object) {
+  const std::string name = "staging for " + std::string(object);
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = size;
+  info.usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  VkBuffer buffer = VK_NULL_HANDLE;
+  check_result(vkCreateBuffer(device_, &info, nullptr, &buffer), "vkCreateBuffer", name);
+  set_name(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<std::uint64_t>(buffer), name);
+  Allocation memory;
+  try {
+    VkMemoryRequirements requirements;
+    vkGetBufferMemoryRequirements(device_, buffer, &requirements);
+    memory = allocator_->allocate(requirements, use, ResourceClass::Buffer, name);
+    check_result(vkBindBufferMemory(device_, buffer, memory.memory, memory.offset), "vkBindBufferMemory", name);
+  } catch (...) {
+    vkDestroyBuffer(device_, buffer, nullptr);
+    allocator_->free(memory);
+    throw;
+  }
+  return {buffer, memory};
+}
+
+void VulkanDevice::upload_buffer(BufferHandle dst, std::uint64_t offset, std::span<const std::byte> data) {
+  check_alive();
+  const BufferObject& b = buffers.get(dst.id, "buffer");
+  if (!has(b.desc.usage, BufferUsage::CopyDst))
+    throw Error(ErrorKind::InvalidUsage, b.name, "upload_buffer needs a buffer created with CopyDst usage");
+  if (offset > b.desc.size || data.size() > b.desc.size - offset)
+    throw Error(ErrorKind::InvalidUsage, b.name,
+                "upload of " + std::to_string(data.size()) + " bytes at offset " + std::to_string(offset) +
+                    " runs past the end of the " + std::to_string(b.desc.size) + "-byte buffer");
+  if (data.empty()) return;
+  auto [staging, memory] = create_staging(data.size(), MemoryUse::Upload, b.name);
+  std::memcpy(memory.mapped, data.data(), data.size());
+  try {
+    run_now(b.name, [&, staging = staging](VkCommandBuffer cmd) {
+      before_transfer(cmd);
+      const VkBufferCopy region{0, offset, data.size()};
+      vkCmdCopyBuffer(cmd, staging, b.buffer, 1, &region);
+    });
+  } catch (...) {
+    vkDestroyBuffer(device_, staging, nullptr);
+    allocator_->free(memory);
+    throw;
+  }
+  vkDestroyBuffer(device_, staging, nullptr);
+  allocator_->free(memory);
+}
+
+void VulkanDevice::read_buffer(BufferHandle src, std::uint64_t offset, std::span<std::byte> out) {
+  check_alive();
+  const BufferObject& b = buffers.get(src.id, "buffer");
+  if (!has(b.desc.usage, BufferUsage::CopySrc))
+    throw Error(ErrorKind::InvalidUsage, b.name, "read_buffer needs a buffer created with CopySrc usage");
+  if (offset > b.desc.size || out.size() > b.desc.size - offset)
+    throw Error(ErrorKind::InvalidUsage, b.name,
+                "read of " + std::to_string(out.size()) + " bytes at offset " + std::to_string(offset) +
+                    " runs past the end of the " + std::to_string(b.desc.size) + "-byte buffer");
+  if (out.empty()) return;
+  auto [staging, memory] = create_staging(out.size(), MemoryUse::Readback, b.name);
+  try {
+    run_now(b.name, [&, staging = staging](VkCommandBuffer cmd) {
+      before_transfer(cmd);
+      const VkBufferCopy region{offset, 0, out.size()};
+      vkCmdCopyBuffer(cmd, b.buffer, staging, 1, &region);
+      transfer_to_host(cmd);
+    });
+    std::memcpy(out.data(), memory.mapped, out.size());
+  } catch (...) {
+    vkDestroyBuffer(device_, staging, nullptr);
+    allocator_->free(memory);
+    throw;
+  }
+  vkDestroyBuffer(device_, staging, nullptr);
+  allocator_->free(memory);
+}
+
+void VulkanDevice::upload_image(ImageHandle dst, std::span<const std::byte> data) {
+  check_alive();
+  const ImageObject& i = images.get(dst.id, "image");
+  if (!has(i.desc.usage, ImageUsage::CopyDst))
+    throw Error(ErrorKind::InvalidUsage, i.name, "upload_image needs an image created with CopyDst usage");
+  const std::uint64_t bytes = std::uint64_t{i.desc.width} * i.desc.height * format_size(i.desc.format);
+  if (data.size() != bytes)
+    throw Error(ErrorKind::InvalidUsage, i.name,
+                "upload_image got " + std::to_string(data.size()) + " bytes; the image holds " + std::to_string(bytes));
+  auto [staging, memory] = create_staging(bytes, MemoryUse::Upload, i.name);
+  std::memcpy(memory.mapped, data.data(), bytes);
+  try {
+    run_now(i.name, [&, staging = staging](VkCommandBuffer cmd) {
+      // The whole image is overwritten, so its previous layout and contents do not matter.
+      VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+      barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+      barrier.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
+      barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+      barrier.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+      barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+      barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+      barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      barrier.image = i.image;
+      barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+      VkDependencyInfo info{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+      info.imageMemoryBarrierCount = 1;
+      info.pImageMemoryBarriers = &barrier;
+      vkCmdPipelineBarrier2(cmd, &info);
+      VkBufferImageCopy region{};
+      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      region.imageExtent = {i.desc.width, i.desc.height, 1};
+      vkCmdCopyBufferToImage(cmd, staging, i.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    });
+  } catch (...) {
+    vkDestroyBuffer(device_, staging, nullptr);
+    allocator_->free(memory);
+    throw;
+  }
+  vkDestroyBuffer(device_, staging, nullptr);
+  allocator_->free(memory);
+}
+
+void VulkanDevice::read_image(ImageHandle src, std::span<std::byte> out) {
+  check_alive();
+  const ImageObject& i = images.get(src.id, "image");
+  if (!has(i.desc.usage, ImageUsage::CopySrc))
+    throw Error(ErrorKind::InvalidUsage, i.name, "read_image needs an image created with CopySrc usage");
+  const std::uint64_t bytes = std::uint64_t{i.desc.width} * i.desc.height * format_size(i.desc.format);
+  if (out.size() != bytes)
+    throw Error(ErrorKind::InvalidUsage, i.name,
+                "read_image got room for " + std::to_string(out.size()) + " bytes; the image holds " +
+                    std::to_string(bytes));
+  auto [staging, memory] = create_staging(bytes, MemoryUse::Readback, i.name);
+  try {
+    run_now(i.name, [&, staging = staging](VkCommandBuffer cmd) {
+      before_transfer(cmd);
+      VkBufferImageCopy region{};
+      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      region.imageExtent = {i.desc.width, i.desc.height, 1};
+      vkCmdCopyImageToBuffer(cmd, i.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging, 1, &region);
+      transfer_to_host(cmd);
+    });
+    std::memcpy(out.data(), memory.mapped, bytes);
+  } catch (...) {
+    vkDestroyBuffer(device_, staging, nullptr);
+    allocator_->free(memory);
+    throw;
+  }
+  vkDestroyBuffer(device_, staging, nullptr);
+  allocator_->free(memory);
+}
+
+}  // namespace hal::vulkan

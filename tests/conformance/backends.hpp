@@ -1,0 +1,62 @@
+// The HAL conformance suite runs on every backend registered here. A backend adds one file that
+// registers a factory (see backend_vulkan.cpp) and one test executable in CMakeLists.txt.
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hal/hal.hpp"
+
+namespace conformance {
+
+struct Backend {
+  std::string name;
+  // Creates a device. Everything the backend's checker reports (Vulkan validation messages, ...)
+  // is appended to `messages`; a conformant run leaves it empty.
+  std::function<std::unique_ptr<hal::Device>(std::vector<std::string>& messages)> create;
+};
+
+std::vector<Backend>& backends();
+
+struct Register {
+  explicit Register(Backend backend) { backends().push_back(std::move(backend)); }
+};
+
+// A device of one backend for the length of a test; on destruction it destroys the device and
+// fails the test on any message the backend reported.
+class TestDevice {
+ public:
+  explicit TestDevice(const Backend& backend) : backend_(backend.name) { device_ = backend.create(messages_); }
+  ~TestDevice() {
+    device_.reset();
+    for (const auto& m : messages_) FAIL_CHECK(backend_ << " reported: " << m);
+  }
+  TestDevice(const TestDevice&) = delete;
+  TestDevice& operator=(const TestDevice&) = delete;
+  hal::Device& operator*() { return *device_; }
+  hal::Device* operator->() { return device_.get(); }
+  const std::vector<std::string>& messages() const { return messages_; }
+
+ private:
+  std::string backend_;
+  std::vector<std::string> messages_;
+  std::unique_ptr<hal::Device> device_;
+};
+
+// Runs `body(device)` once per registered backend, each in its own doctest subcase.
+template <typename F>
+void for_each_backend(F&& body) {
+  REQUIRE_MESSAGE(!backends().empty(), "no HAL backend is registered in this test executable");
+  for (const auto& backend : backends()) {
+    SUBCASE(backend.name.c_str()) {
+      TestDevice device(backend);
+      body(*device);
+    }
+  }
+}
+
+}  // namespace conformance
