@@ -38,8 +38,10 @@ std::string to_hlsl(const std::vector<std::uint32_t>& spirv, bool ray_query) {
 std::string to_msl(const std::vector<std::uint32_t>& spirv, bool ray_query) {
   spirv_cross::CompilerMSL compiler(spirv);
   auto options = compiler.get_msl_options();
-  if (ray_query) options.set_msl_version(2, 3);
-  else options.set_msl_version(2, 1);
+  if (ray_query)
+    options.set_msl_version(2, 3);
+  else
+    options.set_msl_version(2, 1);
   compiler.set_msl_options(options);
   return compiler.compile();
 }

@@ -8,7 +8,10 @@ std::string json_text(const Options& o, const Reflection& r, const Targets& targ
   using nlohmann::json;
   json bindings = json::array();
   for (const auto& b : r.bindings) {
-    json j = {{"set", b.set}, {"binding", b.binding}, {"kind", kind_name(b.kind)}, {"access", access_name(b.access)},
+    json j = {{"set", b.set},
+              {"binding", b.binding},
+              {"kind", kind_name(b.kind)},
+              {"access", access_name(b.access)},
               {"name", b.name}};
     if (!b.format.empty()) j["format"] = b.format;
     bindings.push_back(std::move(j));
@@ -16,7 +19,8 @@ std::string json_text(const Options& o, const Reflection& r, const Targets& targ
   json members = json::array();
   for (const auto& m : r.uniform_members) members.push_back({{"name", m.name}, {"offset", m.offset}, {"size", m.size}});
   json specs = json::array();
-  for (const auto& s : r.spec_constants) specs.push_back({{"name", s.name}, {"id", s.id}, {"default_value", s.default_value}});
+  for (const auto& s : r.spec_constants)
+    specs.push_back({{"name", s.name}, {"id", s.id}, {"default_value", s.default_value}});
 
   json doc = {
       {"name", o.full_name()},

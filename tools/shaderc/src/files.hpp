@@ -8,7 +8,7 @@
 
 namespace shaderc {
 
-std::string read_file(const std::filesystem::path& path);  // throws ToolError
+std::string read_file(const std::filesystem::path& path);                            // throws ToolError
 void write_if_changed(const std::filesystem::path& path, std::string_view content);  // throws ToolError
 void remove_stale(const std::filesystem::path& path);  // a target no longer emitted for this variant
 

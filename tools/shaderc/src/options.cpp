@@ -28,20 +28,33 @@ Options parse_options(int argc, char** argv) {
   std::span<char*> args(argv + 1, static_cast<std::size_t>(argc > 0 ? argc - 1 : 0));
   for (std::size_t i = 0; i < args.size(); ++i) {
     std::string_view flag = args[i];
-    if (i + 1 >= args.size()) throw ToolError("asvgf_shaderc: " + std::string(flag) + " needs a value\n" + std::string(kUsage));
+    if (i + 1 >= args.size())
+      throw ToolError("asvgf_shaderc: " + std::string(flag) + " needs a value\n" + std::string(kUsage));
     std::string value = args[++i];
-    if (flag == "--source") o.source = value;
-    else if (flag == "--name") o.shader = value;
-    else if (flag == "--variant") o.variant = value;
-    else if (flag == "--define") o.defines.push_back(value);
-    else if (flag == "--include-dir") o.include_dirs.emplace_back(value);
-    else if (flag == "--out-dir") o.out_dir = value;
-    else if (flag == "--header-dir") o.header_dir = value;
-    else if (flag == "--depfile") o.depfile = value;
-    else if (flag == "--node") o.node = value;
-    else if (flag == "--node-modules") o.node_modules = value;
-    else if (flag == "--naga-script") o.naga_script = value;
-    else throw ToolError("asvgf_shaderc: unknown option " + std::string(flag) + "\n" + std::string(kUsage));
+    if (flag == "--source")
+      o.source = value;
+    else if (flag == "--name")
+      o.shader = value;
+    else if (flag == "--variant")
+      o.variant = value;
+    else if (flag == "--define")
+      o.defines.push_back(value);
+    else if (flag == "--include-dir")
+      o.include_dirs.emplace_back(value);
+    else if (flag == "--out-dir")
+      o.out_dir = value;
+    else if (flag == "--header-dir")
+      o.header_dir = value;
+    else if (flag == "--depfile")
+      o.depfile = value;
+    else if (flag == "--node")
+      o.node = value;
+    else if (flag == "--node-modules")
+      o.node_modules = value;
+    else if (flag == "--naga-script")
+      o.naga_script = value;
+    else
+      throw ToolError("asvgf_shaderc: unknown option " + std::string(flag) + "\n" + std::string(kUsage));
   }
   if (o.source.empty() || o.shader.empty() || o.out_dir.empty() || o.header_dir.empty() || o.node.empty() ||
       o.node_modules.empty() || o.naga_script.empty())

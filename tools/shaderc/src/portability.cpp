@@ -7,7 +7,9 @@ namespace {
 constexpr std::size_t kWebGpuStorageBuffers = 8;   // maxStorageBuffersPerShaderStage
 constexpr std::size_t kWebGpuStorageTextures = 4;  // maxStorageTexturesPerShaderStage
 
-bool is_r32(const std::string& format) { return format == "r32f" || format == "r32ui" || format == "r32i"; }
+bool is_r32(const std::string& format) {
+  return format == "r32f" || format == "r32ui" || format == "r32i";
+}
 
 }  // namespace
 

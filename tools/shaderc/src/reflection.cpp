@@ -17,11 +17,16 @@ struct FormatName {
 };
 // Exactly the formats hal::Format has (hal/include/hal/types.hpp).
 constexpr FormatName kFormats[] = {
-    {spv::ImageFormatR8, "r8", "R8Unorm"},         {spv::ImageFormatRgba8, "rgba8", "RGBA8Unorm"},
-    {spv::ImageFormatR16f, "r16f", "R16F"},        {spv::ImageFormatRg16f, "rg16f", "RG16F"},
-    {spv::ImageFormatRgba16f, "rgba16f", "RGBA16F"}, {spv::ImageFormatR32f, "r32f", "R32F"},
-    {spv::ImageFormatRg32f, "rg32f", "RG32F"},     {spv::ImageFormatRgba32f, "rgba32f", "RGBA32F"},
-    {spv::ImageFormatR32ui, "r32ui", "R32Uint"},   {spv::ImageFormatRg32ui, "rg32ui", "RG32Uint"},
+    {spv::ImageFormatR8, "r8", "R8Unorm"},
+    {spv::ImageFormatRgba8, "rgba8", "RGBA8Unorm"},
+    {spv::ImageFormatR16f, "r16f", "R16F"},
+    {spv::ImageFormatRg16f, "rg16f", "RG16F"},
+    {spv::ImageFormatRgba16f, "rgba16f", "RGBA16F"},
+    {spv::ImageFormatR32f, "r32f", "R32F"},
+    {spv::ImageFormatRg32f, "rg32f", "RG32F"},
+    {spv::ImageFormatRgba32f, "rgba32f", "RGBA32F"},
+    {spv::ImageFormatR32ui, "r32ui", "R32Uint"},
+    {spv::ImageFormatRg32ui, "rg32ui", "RG32Uint"},
     {spv::ImageFormatRgba32ui, "rgba32ui", "RGBA32Uint"},
 };
 
@@ -64,20 +69,28 @@ bool has_opcode(const std::vector<std::uint32_t>& spirv, spv::Op op) {
 
 const char* kind_name(Kind kind) {
   switch (kind) {
-    case Kind::UniformBuffer: return "UniformBuffer";
-    case Kind::StorageBuffer: return "StorageBuffer";
-    case Kind::SampledImage: return "SampledImage";
-    case Kind::StorageImage: return "StorageImage";
-    case Kind::AccelerationStructure: return "AccelerationStructure";
+    case Kind::UniformBuffer:
+      return "UniformBuffer";
+    case Kind::StorageBuffer:
+      return "StorageBuffer";
+    case Kind::SampledImage:
+      return "SampledImage";
+    case Kind::StorageImage:
+      return "StorageImage";
+    case Kind::AccelerationStructure:
+      return "AccelerationStructure";
   }
   return "?";
 }
 
 const char* access_name(Access access) {
   switch (access) {
-    case Access::Read: return "Read";
-    case Access::Write: return "Write";
-    case Access::ReadWrite: return "ReadWrite";
+    case Access::Read:
+      return "Read";
+    case Access::Write:
+      return "Write";
+    case Access::ReadWrite:
+      return "ReadWrite";
   }
   return "?";
 }
@@ -88,7 +101,8 @@ Reflection reflect(const std::vector<std::uint32_t>& spirv, const std::string& s
     spirv_cross::Compiler c(spirv);
     const auto res = c.get_shader_resources();
 
-    for (std::uint32_t i = 0; i < 3; ++i) out.workgroup_size[i] = c.get_execution_mode_argument(spv::ExecutionModeLocalSize, i);
+    for (std::uint32_t i = 0; i < 3; ++i)
+      out.workgroup_size[i] = c.get_execution_mode_argument(spv::ExecutionModeLocalSize, i);
 
     out.uniform_block_count = static_cast<std::uint32_t>(res.uniform_buffers.size());
     for (const auto& r : res.uniform_buffers) {
@@ -106,7 +120,8 @@ Reflection reflect(const std::vector<std::uint32_t>& spirv, const std::string& s
     for (const auto& r : res.storage_images) {
       Binding b = make_binding(c, r, Kind::StorageImage, access_of(c.get_decoration_bitset(r.id)));
       const auto format = c.get_type(r.type_id).image.format;
-      auto it = std::find_if(std::begin(kFormats), std::end(kFormats), [&](const FormatName& f) { return f.spv == format; });
+      auto it =
+          std::find_if(std::begin(kFormats), std::end(kFormats), [&](const FormatName& f) { return f.spv == format; });
       if (it == std::end(kFormats)) {
         out.unsupported.push_back("storage image '" + b.name + "' has a format hal::Format lacks (SPIR-V ImageFormat " +
                                   std::to_string(static_cast<int>(format)) + ")");
@@ -120,12 +135,14 @@ Reflection reflect(const std::vector<std::uint32_t>& spirv, const std::string& s
       out.bindings.push_back(make_binding(c, r, Kind::AccelerationStructure, Access::Read));
 
     for (const auto& r : res.push_constant_buffers) out.unsupported.push_back("push constant block '" + r.name + "'");
-    for (const auto& r : res.sampled_images) out.unsupported.push_back("combined image sampler '" + c.get_name(r.id) + "'");
+    for (const auto& r : res.sampled_images)
+      out.unsupported.push_back("combined image sampler '" + c.get_name(r.id) + "'");
     for (const auto& r : res.separate_samplers) out.unsupported.push_back("sampler '" + c.get_name(r.id) + "'");
     for (const auto& r : res.atomic_counters) out.unsupported.push_back("atomic counter '" + c.get_name(r.id) + "'");
 
-    std::sort(out.bindings.begin(), out.bindings.end(),
-              [](const Binding& a, const Binding& b) { return std::pair(a.set, a.binding) < std::pair(b.set, b.binding); });
+    std::sort(out.bindings.begin(), out.bindings.end(), [](const Binding& a, const Binding& b) {
+      return std::pair(a.set, a.binding) < std::pair(b.set, b.binding);
+    });
 
     for (const auto& sc : c.get_specialization_constants())
       out.spec_constants.push_back({c.get_name(sc.id), sc.constant_id, c.get_constant(sc.id).scalar()});

@@ -11,7 +11,7 @@ namespace shaderc {
 
 enum class Kind { UniformBuffer, StorageBuffer, SampledImage, StorageImage, AccelerationStructure };
 enum class Access { Read, Write, ReadWrite };
-const char* kind_name(Kind kind);      // the hal::BindingKind enumerator
+const char* kind_name(Kind kind);        // the hal::BindingKind enumerator
 const char* access_name(Access access);  // the hal::Access enumerator
 
 struct Binding {

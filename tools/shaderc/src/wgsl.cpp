@@ -34,8 +34,8 @@ std::string to_wgsl(const Options& o, const std::filesystem::path& spv) {
   const int status = pclose(pipe.release());
   if (status != 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     remove_stale(tmp);
-    throw ToolError(std::filesystem::absolute(o.source).string() + ": error: " + o.full_name() + ": WGSL: naga cannot translate the SPIR-V:\n" +
-                    log);
+    throw ToolError(std::filesystem::absolute(o.source).string() + ": error: " + o.full_name() +
+                    ": WGSL: naga cannot translate the SPIR-V:\n" + log);
   }
   std::string text = read_file(tmp);
   remove_stale(tmp);
