@@ -1,0 +1,164 @@
+// graph/graph_runtime.hpp: compiling and executing render graphs frame after frame.
+//
+// The runtime owns the HAL resources behind graph resources: a pool of transient images and
+// buffers (shared by transients whose lifetimes do not overlap), two versions of every persistent
+// resource (ping-ponged: frame f writes version f%2 and reads last frame's as its history), and the
+// timer queries. compile() needs the runtime because barriers depend on the states resources were
+// left in by the previous frame.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "graph/render_graph.hpp"
+
+namespace asvgf::graph {
+
+// Where a graph resource lives in this frame.
+struct Placement {
+  enum class Where : std::uint8_t { Unused, Transient, Persistent, Imported } where = Where::Unused;
+  std::uint32_t slot = 0;  // transient pool slot, or persistent version written this frame
+};
+
+struct GraphBarrier {
+  ResourceId resource = 0;
+  bool history = false;  // the barrier is on last frame's version
+  hal::State before = hal::State::Undefined;
+  hal::State after = hal::State::Undefined;
+  friend bool operator==(const GraphBarrier&, const GraphBarrier&) = default;
+};
+
+struct CompiledPass {
+  std::size_t pass = 0;                       // index into RenderGraph::passes()
+  std::vector<ResourceId> history_clears;     // histories never written: cleared to zero first
+  std::vector<GraphBarrier> barriers;         // recorded before the pass, in this order
+};
+
+struct CulledPass {
+  std::string name;
+  std::string reason;
+};
+
+struct MemoryReport {
+  std::uint64_t transient_without_aliasing = 0;  // bytes if every transient had its own memory
+  std::uint64_t transient_with_aliasing = 0;     // bytes of the pool slots actually used
+  std::uint64_t persistent = 0;                  // both versions of every persistent resource
+};
+
+struct CompiledFrame {
+  const RenderGraph* graph = nullptr;
+  std::uint64_t frame = 0;
+  std::vector<CompiledPass> passes;  // in execution order
+  std::vector<CulledPass> culled;
+  std::vector<Placement> placement;  // per resource
+  // Per resource: first and last position in `passes` that touches it (transients only).
+  std::vector<std::pair<int, int>> lifetime;
+  MemoryReport memory;
+  // States and written flags of persistent versions after this frame (applied by execute()).
+  struct PersistentEnd {
+    std::string name;
+    std::uint32_t version = 0;
+    hal::State state = hal::State::Undefined;
+    bool written = false;
+    bool pending_write = false, pending_read = false;  // unsynchronised accesses carried into the next frame
+  };
+  std::vector<PersistentEnd> persistent_end;
+  std::vector<std::uint32_t> new_slots;  // pool slots this frame adds (indices into the runtime's pool)
+
+  std::string text() const;  // readable dump: order, barriers, culled passes with reasons, memory
+  std::string dot() const;   // Graphviz
+};
+
+struct PassTiming {
+  std::string pass;
+  std::optional<double> gpu_ms;  // empty when the device has no timestamps
+};
+
+class PassContext {
+ public:
+  hal::Device& device() { return device_; }
+  hal::CommandList& commands() { return commands_; }
+  std::uint64_t frame() const { return frame_; }
+  const std::string& pass_name() const { return pass_name_; }
+  // The HAL object behind a resource this frame, and behind last frame's version.
+  hal::Resource resource(ResourceId id) const;
+  hal::Resource history(ResourceId id) const;
+  hal::ImageHandle image(ResourceId id) const { return hal::ImageHandle{resource(id).id}; }
+  hal::BufferHandle buffer(ResourceId id) const { return hal::BufferHandle{resource(id).id}; }
+  // False when last frame's version holds nothing yet (first frame, after reset): it reads zeros.
+  bool history_valid(ResourceId id) const;
+  // Dispatch with bindings by shader name; binding sets are cached by the runtime.
+  void dispatch(hal::PipelineHandle pipeline, const std::vector<hal::BindingSetDesc::Entry>& entries,
+                std::span<const std::byte> uniforms, std::uint32_t groups_x, std::uint32_t groups_y = 1,
+                std::uint32_t groups_z = 1);
+
+ private:
+  friend class GraphRuntime;
+  PassContext(class GraphRuntime& runtime, hal::Device& device, hal::CommandList& commands,
+              const CompiledFrame& frame, std::string pass_name)
+      : runtime_(runtime), device_(device), commands_(commands), compiled_(frame), frame_(frame.frame),
+        pass_name_(std::move(pass_name)) {}
+  GraphRuntime& runtime_;
+  hal::Device& device_;
+  hal::CommandList& commands_;
+  const CompiledFrame& compiled_;
+  std::uint64_t frame_;
+  std::string pass_name_;
+};
+
+class GraphRuntime {
+ public:
+  explicit GraphRuntime(hal::Device& device);
+  ~GraphRuntime();
+  GraphRuntime(const GraphRuntime&) = delete;
+  GraphRuntime& operator=(const GraphRuntime&) = delete;
+
+  // Culls, orders, places resources and derives barriers; throws GraphError naming the pass and
+  // the resource on a read of something nothing writes, a cycle, or unordered writers.
+  CompiledFrame compile(const RenderGraph& graph);
+  // Records the frame (labels, barriers, history clears, a timer region per pass) and advances
+  // the runtime to the next frame. The caller submits `commands`.
+  void execute(const CompiledFrame& frame, hal::CommandList& commands);
+  // GPU time per pass of the last executed frame; call after the device finished it.
+  std::vector<PassTiming> timings();
+  // Forgets every history (camera cut, resize): the next frame sees none as valid.
+  void reset_histories();
+  std::uint64_t frame() const { return frame_; }
+
+ private:
+  friend class PassContext;
+  // A pooled transient: reused by any transient of the same kind, size and format.
+  struct Slot {
+    hal::ResourceKind kind = hal::ResourceKind::Image;
+    std::uint32_t width = 0, height = 0;
+    hal::Format format = hal::Format::Undefined;
+    std::uint64_t size = 0;
+    hal::Resource handle;  // created on first execute
+  };
+  struct Persistent {
+    ResourceDecl decl;
+    hal::Resource versions[2];
+    hal::State state[2] = {hal::State::Undefined, hal::State::Undefined};
+    bool written[2] = {false, false};
+    bool pending_write[2] = {false, false};
+    bool pending_read[2] = {false, false};
+  };
+  bool same_shape(const Slot& slot, const ResourceDecl& decl) const;
+  hal::Resource physical(const CompiledFrame& frame, ResourceId id, bool history);
+  void ensure_resources(const CompiledFrame& frame);
+  hal::BindingSetHandle binding_set(hal::PipelineHandle pipeline, const std::vector<hal::BindingSetDesc::Entry>& e);
+
+  hal::Device& device_;
+  std::uint64_t frame_ = 0;
+  std::vector<Slot> slots_;
+  std::map<std::string, Persistent> persistent_;
+  std::map<std::string, hal::BindingSetHandle> binding_sets_;
+  hal::TimerQueriesHandle timers_;
+  std::uint32_t timer_regions_ = 0;
+  std::vector<std::string> timed_passes_;
+};
+
+}  // namespace asvgf::graph

@@ -1,0 +1,323 @@
+// The render graph on the recording HAL: barriers derived from declarations, culling, aliasing,
+// history ping-pong, compile errors, and the real A-SVGF frame of every method.
+#include <doctest/doctest.h>
+
+#include <random>
+
+#include "frame/frame_graph.hpp"
+#include "graph/graph_runtime.hpp"
+#include "hal_record/record_device.hpp"
+
+using namespace asvgf;
+using graph::GraphBarrier;
+using graph::Lifetime;
+using graph::Use;
+using hal::State;
+
+namespace {
+
+std::string messages(const hal::record::RecordDevice& d) {
+  std::string s;
+  for (const auto& r : d.reports()) s += r.message + "\n";
+  return s;
+}
+
+struct Scene {
+  hal::record::RecordDevice device;
+  hal::BufferHandle geometry = device.create_buffer(
+      {"geometry", 1024, hal::BufferUsage::Storage | hal::BufferUsage::AccelBuildInput | hal::BufferUsage::CopyDst});
+  hal::AccelHandle blas, tlas;
+  Scene() {
+    std::array<std::byte, 64> zeros{};
+    device.upload_buffer(geometry, 0, zeros);
+    blas = device.create_blas({"blas", geometry, 3, geometry, 1});
+    tlas = device.create_tlas({"tlas", 1});
+    auto cmd = device.create_command_list("scene");
+    cmd->barrier({{geometry, State::CopyDst, State::AccelBuildInput}, {blas, State::Undefined, State::AccelWrite}});
+    cmd->build_blas(blas, false);
+    cmd->barrier({blas, State::AccelWrite, State::AccelRead});
+    cmd->barrier({tlas, State::Undefined, State::AccelWrite});
+    hal::TlasInstance instance{blas};
+    cmd->build_tlas(tlas, std::span(&instance, 1), false);
+    cmd->barrier({{tlas, State::AccelWrite, State::AccelRead}, {geometry, State::AccelBuildInput, State::ShaderRead}});
+    device.submit(*cmd);
+  }
+};
+
+// Runs `frames` frames of a method; `mutate` may edit each frame's graph before compiling.
+void run_frames(Scene& scene, frame::FrameSettings settings, int frames,
+                const std::function<void(graph::RenderGraph&)>& mutate = {}) {
+  graph::GraphRuntime runtime(scene.device);
+  frame::FrameGraphBuilder builder(scene.device);
+  auto cmd = scene.device.create_command_list("frame");
+  for (int f = 0; f < frames; ++f) {
+    auto g = builder.build(settings, scene.tlas, scene.geometry);
+    if (mutate) mutate(g);
+    auto compiled = runtime.compile(g);
+    runtime.execute(compiled, *cmd);
+    scene.device.submit(*cmd);
+    cmd->reset();
+  }
+}
+
+}  // namespace
+
+TEST_CASE("every method's frame compiles and runs 4 frames on the recording HAL with no report") {
+  for (frame::Method method : frame::kAllMethods) {
+    CAPTURE(frame::to_string(method));
+    Scene scene;
+    frame::FrameSettings s;
+    s.method = method;
+    s.width = 20;
+    s.height = 14;
+    run_frames(scene, s, 4);
+    CHECK_MESSAGE(scene.device.reports().empty(), messages(scene.device));
+    // Frames alternate between moving and still scenes: gradient passes come and go.
+    Scene scene2;
+    graph::GraphRuntime runtime(scene2.device);
+    frame::FrameGraphBuilder builder(scene2.device);
+    auto cmd = scene2.device.create_command_list("frame");
+    for (int f = 0; f < 4; ++f) {
+      s.scene_moved = f % 2 == 0;
+      auto g = builder.build(s, scene2.tlas, scene2.geometry);
+      runtime.execute(runtime.compile(g), *cmd);
+      scene2.device.submit(*cmd);
+      cmd->reset();
+    }
+    CHECK_MESSAGE(scene2.device.reports().empty(), messages(scene2.device));
+  }
+}
+
+TEST_CASE("deleting any declared write of an asvgf pass is caught; a deleted read only when no other pass reads it") {
+  // Every deleted write is caught, by the recording HAL or by the graph compiler. A deleted read can
+  // leave the program correct, when another pass reads the same version of the same resource in
+  // the same frame: its barrier into the read state is then placed anyway, and there is no hazard
+  // to report. Only that kind of deletion may pass silently.
+  frame::FrameSettings s;
+  s.width = 12;
+  s.height = 9;
+  s.atrous_iterations = 2;
+  s.gradient_iterations = 2;
+  Scene probe;
+  frame::FrameGraphBuilder probe_builder(probe.device);
+  const auto g0 = probe_builder.build(s, probe.tlas, probe.geometry);
+  int caught_by_hal = 0, caught_by_graph = 0, unchanged_reads = 0;
+  for (std::size_t p = 0; p < g0.passes().size(); ++p) {
+    for (std::size_t a = 0; a < g0.passes()[p].accesses.size(); ++a) {
+      const auto& access = g0.passes()[p].accesses[a];
+      if (g0.passes()[p].name == "debug_view") continue;  // culled: its declarations record nothing
+      CAPTURE(g0.passes()[p].name);
+      CAPTURE(g0.resource(access.resource).name);
+      CAPTURE(access.history);
+      Scene scene;
+      try {
+        run_frames(scene, s, 3, [&](graph::RenderGraph& g) {
+          auto& list = g.passes()[p].accesses;
+          list.erase(list.begin() + static_cast<std::ptrdiff_t>(a));
+        });
+      } catch (const graph::GraphError&) {
+        ++caught_by_graph;
+        continue;
+      }
+      if (!scene.device.reports().empty()) {
+        ++caught_by_hal;
+        continue;
+      }
+      // Silent only when the program is still correct: a read whose resource (same version) another
+      // live pass also reads, so that the barrier into the read state is placed anyway.
+      CHECK_FALSE(graph::writes(access.use));
+      bool read_elsewhere = false;
+      for (std::size_t q = 0; q < g0.passes().size(); ++q)
+        for (const auto& other : g0.passes()[q].accesses)
+          read_elsewhere = read_elsewhere || (q != p && g0.passes()[q].name != "debug_view" &&
+                                              other.resource == access.resource && other.history == access.history &&
+                                              graph::reads(other.use));
+      CHECK(read_elsewhere);
+      ++unchanged_reads;
+    }
+  }
+  MESSAGE(caught_by_hal << " deletions reported by the recording HAL, " << caught_by_graph
+                        << " refused by the graph compiler, " << unchanged_reads
+                        << " redundant reads that leave the command stream unchanged");
+  CHECK(caught_by_hal > 10);
+}
+
+TEST_CASE("culling: an output nobody reads culls its pass, a still frame culls the gradient passes") {
+  Scene scene;
+  graph::GraphRuntime runtime(scene.device);
+  frame::FrameGraphBuilder builder(scene.device);
+  frame::FrameSettings s;
+  s.width = 16;
+  s.height = 16;
+  s.scene_moved = false;
+  auto g = builder.build(s, scene.tlas, scene.geometry);
+  auto compiled = runtime.compile(g);
+  std::map<std::string, std::string> culled;
+  for (const auto& c : compiled.culled) culled[c.name] = c.reason;
+  CHECK(culled.count("debug_view") == 1);
+  CHECK(culled["debug_view"].find("nothing that contributes") != std::string::npos);
+  for (const char* name : {"gradient_select", "gradient", "gradient_atrous.1", "gradient_atrous.3"}) {
+    CAPTURE(name);
+    REQUIRE(culled.count(name) == 1);
+    CHECK(culled[name].find("nothing in the scene, camera or lights moved") != std::string::npos);
+  }
+  const std::string text = compiled.text();
+  CHECK(text.find("left out:") != std::string::npos);
+  CHECK(text.find("debug_view: nothing that contributes") != std::string::npos);
+  CHECK(text.find("gradient_select: nothing in the scene") != std::string::npos);
+  CHECK(compiled.dot().find("left out") != std::string::npos);
+
+  s.scene_moved = true;
+  s.debug_view = true;
+  auto g2 = builder.build(s, scene.tlas, scene.geometry);
+  auto compiled2 = runtime.compile(g2);
+  CHECK(compiled2.culled.empty());
+}
+
+TEST_CASE("on a small known graph the derived barriers are exactly the expected ones") {
+  hal::record::RecordDevice device;
+  graph::GraphRuntime runtime(device);
+  graph::RenderGraph g;
+  const auto a = g.add_image("a", 4, 4, hal::Format::RGBA16F);
+  const auto b = g.add_image("b", 4, 4, hal::Format::RGBA16F);
+  const auto h = g.add_image("h", 4, 4, hal::Format::R32F, Lifetime::Persistent);
+  g.add_pass("produce").write(a);
+  g.add_pass("blur").read(a).read_history(h).write(b);
+  g.add_pass("keep").read(a).read(b).write(h);
+  g.output(h);
+  auto f0 = runtime.compile(g);
+  REQUIRE(f0.passes.size() == 3);
+  CHECK(f0.passes[0].barriers == std::vector<GraphBarrier>{{a, false, State::Undefined, State::ShaderWrite}});
+  CHECK(f0.passes[1].history_clears == std::vector<graph::ResourceId>{h});
+  CHECK(f0.passes[1].barriers == std::vector<GraphBarrier>{{a, false, State::ShaderWrite, State::ShaderRead},
+                                                           {h, true, State::CopyDst, State::ShaderRead},
+                                                           {b, false, State::Undefined, State::ShaderWrite}});
+  // No barrier between the two reads of `a`.
+  CHECK(f0.passes[2].barriers == std::vector<GraphBarrier>{{b, false, State::ShaderWrite, State::ShaderRead},
+                                                           {h, false, State::Undefined, State::ShaderWrite}});
+  auto cmd = device.create_command_list("known");
+  runtime.execute(f0, *cmd);
+  device.submit(*cmd);
+  cmd->reset();
+  // Next frame: h's other version, written last frame, is the history; nothing is cleared. The
+  // version written now was last frame's history (shader-read) and was never written.
+  auto f1 = runtime.compile(g);
+  CHECK(f1.passes[1].history_clears.empty());
+  CHECK(f1.passes[1].barriers == std::vector<GraphBarrier>{{a, false, State::ShaderWrite, State::ShaderRead},
+                                                           {h, true, State::ShaderWrite, State::ShaderRead},
+                                                           {b, false, State::Undefined, State::ShaderWrite}});
+  CHECK(f1.passes[2].barriers == std::vector<GraphBarrier>{{b, false, State::ShaderWrite, State::ShaderRead},
+                                                           {h, false, State::ShaderRead, State::ShaderWrite}});
+  runtime.execute(f1, *cmd);
+  device.submit(*cmd);
+  CHECK_MESSAGE(device.reports().empty(), messages(device));
+}
+
+TEST_CASE("history ping-pong: a pass reads last frame's version, cleared on the first frame") {
+  hal::record::RecordDevice device;
+  graph::GraphRuntime runtime(device);
+  hal::Resource written[3], read[3];
+  bool valid[3];
+  for (int f = 0; f < 3; ++f) {
+    graph::RenderGraph g;
+    const auto h = g.add_image("accum", 4, 4, hal::Format::RGBA32F, Lifetime::Persistent);
+    g.add_pass("accumulate").read_history(h).write(h).execute([&, h, f](graph::PassContext& ctx) {
+      written[f] = ctx.resource(h);
+      read[f] = ctx.history(h);
+      valid[f] = ctx.history_valid(h);
+    });
+    g.output(h);
+    auto cmd = device.create_command_list("f");
+    runtime.execute(runtime.compile(g), *cmd);
+    device.submit(*cmd);
+  }
+  CHECK_FALSE(valid[0]);
+  CHECK(valid[1]);
+  CHECK(valid[2]);
+  CHECK(read[1] == written[0]);
+  CHECK(read[2] == written[1]);
+  CHECK_FALSE(written[0] == written[1]);
+  CHECK_MESSAGE(device.reports().empty(), messages(device));
+}
+
+TEST_CASE("compile errors name the pass and the resource") {
+  hal::record::RecordDevice device;
+  graph::GraphRuntime runtime(device);
+  auto expect_error = [&](const graph::RenderGraph& g, const std::vector<std::string>& words) {
+    try {
+      runtime.compile(g);
+      FAIL("expected a GraphError");
+    } catch (const graph::GraphError& e) {
+      for (const auto& w : words) CHECK_MESSAGE(std::string(e.what()).find(w) != std::string::npos, e.what());
+    }
+  };
+  {
+    graph::RenderGraph g;
+    const auto x = g.add_image("never_written", 4, 4, hal::Format::R32F);
+    const auto y = g.add_image("out", 4, 4, hal::Format::R32F);
+    g.add_pass("consumer").read(x).write(y);
+    g.output(y);
+    expect_error(g, {"'consumer'", "'never_written'", "no pass writes"});
+  }
+  {
+    graph::RenderGraph g;
+    const auto x = g.add_image("x", 4, 4, hal::Format::R32F);
+    const auto y = g.add_image("y", 4, 4, hal::Format::R32F);
+    g.add_pass("first").read(y).write(x);
+    g.add_pass("second").read(x).write(y);
+    g.output(y);
+    expect_error(g, {"cycle", "'first'", "'second'"});
+  }
+  {
+    graph::RenderGraph g;
+    const auto x = g.add_image("shared", 4, 4, hal::Format::R32F);
+    g.add_pass("writer_a").write(x);
+    g.add_pass("writer_b").write(x);
+    g.output(x);
+    expect_error(g, {"'writer_a'", "'writer_b'", "'shared'", "no order"});
+  }
+}
+
+TEST_CASE("aliasing: seeded random graphs never alias two transients whose lifetimes overlap") {
+  std::uint64_t with = 0, without = 0;
+  for (std::uint32_t seed = 1; seed <= 40; ++seed) {
+    CAPTURE(seed);
+    std::mt19937 rng(seed);
+    hal::record::RecordDevice device;
+    graph::GraphRuntime runtime(device);
+    graph::RenderGraph g;
+    std::vector<graph::ResourceId> made;
+    const int passes = 4 + static_cast<int>(rng() % 10);
+    for (int p = 0; p < passes; ++p) {
+      const auto format = rng() % 2 ? hal::Format::RGBA16F : hal::Format::R32F;
+      const auto out = g.add_image("t" + std::to_string(p), 8, 8, format);
+      auto builder = g.add_pass("p" + std::to_string(p));
+      // Read up to two earlier results, so that lifetimes are of every length.
+      for (int k = 0; k < 2 && !made.empty(); ++k) builder.read(made[rng() % made.size()]);
+      builder.write(out);
+      made.push_back(out);
+    }
+    g.output(made.back());
+    auto compiled = runtime.compile(g);
+    const auto& res = g.resources();
+    for (std::size_t i = 0; i < res.size(); ++i)
+      for (std::size_t j = i + 1; j < res.size(); ++j) {
+        const auto& pi = compiled.placement[i];
+        const auto& pj = compiled.placement[j];
+        if (pi.where != graph::Placement::Where::Transient || pj.where != pi.where || pi.slot != pj.slot) continue;
+        const auto li = compiled.lifetime[i], lj = compiled.lifetime[j];
+        CHECK_MESSAGE((li.second < lj.first || lj.second < li.first),
+                      res[i].name << " and " << res[j].name << " share slot " << pi.slot);
+        CHECK(res[i].format == res[j].format);
+      }
+    CHECK(compiled.memory.transient_with_aliasing <= compiled.memory.transient_without_aliasing);
+    with += compiled.memory.transient_with_aliasing;
+    without += compiled.memory.transient_without_aliasing;
+    auto cmd = device.create_command_list("random");
+    runtime.execute(compiled, *cmd);
+    device.submit(*cmd);
+    CHECK_MESSAGE(device.reports().empty(), messages(device));
+  }
+  MESSAGE("transient memory over 40 graphs: " << with << " bytes with aliasing, " << without << " without");
+  CHECK(with < without);
+}
