@@ -5,9 +5,13 @@
 #include <cstdint>
 #include <cstring>
 #include <random>
+#include <stdexcept>
+#include <string>
+#include <string_view>
 #include <span>
 #include <vector>
 
+#include "hal/shader.hpp"
 #include "hal/types.hpp"
 
 namespace conformance {
@@ -67,5 +71,26 @@ template <typename T>
 std::span<const std::byte> struct_bytes(const T& value) {
   return std::as_bytes(std::span<const T>(&value, 1));
 }
+
+// Fills a shader's uniform block by member name, at the offsets its reflection gives.
+class Uniforms {
+ public:
+  explicit Uniforms(const hal::ShaderInfo& shader) : shader_(shader), bytes_(shader.uniform_block_size) {}
+  template <typename T>
+  Uniforms& set(std::string_view member, T value) {
+    for (const auto& m : shader_.uniform_members)
+      if (m.name == member && m.size == sizeof(T) && m.offset + sizeof(T) <= bytes_.size()) {
+        std::memcpy(bytes_.data() + m.offset, &value, sizeof(T));
+        return *this;
+      }
+    throw std::runtime_error("uniform member '" + std::string(member) + "' of size " + std::to_string(sizeof(T)) +
+                             " not in shader " + std::string(shader_.name));
+  }
+  std::span<const std::byte> bytes() const { return bytes_; }
+
+ private:
+  const hal::ShaderInfo& shader_;
+  std::vector<std::byte> bytes_;
+};
 
 }  // namespace conformance

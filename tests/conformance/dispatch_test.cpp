@@ -1,0 +1,173 @@
+// Compute dispatches checked against a CPU computation; binding mismatches named on both sides.
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+#include "backends.hpp"
+#include "data.hpp"
+#include "shaders/hal_test_image.hpp"
+#include "shaders/hal_test_ray_query.rayquery.hpp"
+#include "shaders/hal_test_scale.hpp"
+
+using namespace conformance;
+using hal::State;
+
+namespace {
+
+std::vector<float> random_floats(std::size_t count, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> dist(-100.0f, 100.0f);
+  std::vector<float> v(count);
+  for (auto& x : v) x = dist(rng);
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("conformance: hal_test_scale dispatches match the CPU, each with its own uniforms") {
+  for_each_backend([](hal::Device& device) {
+    const hal::ShaderInfo& shader = asvgf::shaders::hal_test_scale;
+    constexpr std::uint32_t count = 1000;  // not a multiple of the workgroup size
+    const auto input = random_floats(count, 3);
+    const auto src = device.create_buffer({"scale src", count * 4, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst});
+    hal::BufferHandle dst[2];
+    for (int i = 0; i < 2; ++i)
+      dst[i] = device.create_buffer(
+          {"scale dst " + std::to_string(i), count * 4, hal::BufferUsage::Storage | hal::BufferUsage::CopySrc});
+    device.upload_buffer(src, 0, as_bytes(input));
+
+    const auto pipeline = device.create_pipeline({"scale", &shader, {}});
+    hal::BindingSetHandle sets[2];
+    for (int i = 0; i < 2; ++i)
+      sets[i] = device.create_binding_set({"scale set " + std::to_string(i), pipeline, {{"src", src}, {"dst", dst[i]}}});
+
+    // Multiplying by a power of two is exact, so fused and unfused multiply-add agree bit for bit.
+    const float scales[2] = {2.0f, -0.25f}, offsets[2] = {0.5f, 3.0f};
+    auto cmd = device.create_command_list("scale");
+    cmd->begin_label("scale");
+    cmd->barrier({src, State::CopyDst, State::ShaderRead});
+    for (int i = 0; i < 2; ++i) {
+      cmd->barrier({dst[i], State::Undefined, State::ShaderWrite});
+      Uniforms uniforms(shader);
+      uniforms.set("count", count).set("scale", scales[i]).set("offset", offsets[i]);
+      const std::uint32_t groups = (count + shader.workgroup_size[0] - 1) / shader.workgroup_size[0];
+      cmd->dispatch({pipeline, sets[i], uniforms.bytes(), groups, 1, 1});
+      cmd->barrier({dst[i], State::ShaderWrite, State::CopySrc});
+    }
+    cmd->end_label();
+    device.submit(*cmd);
+    device.wait();
+
+    for (int i = 0; i < 2; ++i) {
+      std::vector<float> out(count);
+      device.read_buffer(dst[i], 0, as_writable(out));
+      int wrong = 0;
+      for (std::uint32_t k = 0; k < count; ++k)
+        if (out[k] != input[k] * scales[i] + offsets[i]) ++wrong;
+      CHECK_MESSAGE(wrong == 0, "dispatch " << i << ": " << wrong << " wrong values");
+    }
+  });
+}
+
+TEST_CASE("conformance: hal_test_image dispatch matches the CPU") {
+  for_each_backend([](hal::Device& device) {
+    const hal::ShaderInfo& shader = asvgf::shaders::hal_test_image;
+    constexpr std::uint32_t w = 37, h = 23;
+    const auto input = random_floats(std::size_t{w} * h * 4, 4);
+    const auto src = device.create_image(
+        {"image src", w, h, hal::Format::RGBA32F, hal::ImageUsage::Sampled | hal::ImageUsage::CopyDst});
+    const auto dst = device.create_image(
+        {"image dst", w, h, hal::Format::RGBA32F, hal::ImageUsage::Storage | hal::ImageUsage::CopySrc});
+    device.upload_image(src, as_bytes(input));
+    const auto pipeline = device.create_pipeline({"image", &shader, {}});
+    const auto set = device.create_binding_set({"image set", pipeline, {{"src_image", src}, {"dst_image", dst}}});
+
+    auto cmd = device.create_command_list("image");
+    cmd->barrier({src, State::CopyDst, State::ShaderRead});
+    cmd->barrier({dst, State::Undefined, State::ShaderWrite});
+    Uniforms uniforms(shader);
+    uniforms.set("width", w).set("height", h).set("scale", 4.0f).set("offset", -1.0f);
+    cmd->dispatch({pipeline, set, uniforms.bytes(), (w + 7) / 8, (h + 7) / 8, 1});
+    cmd->barrier({dst, State::ShaderWrite, State::CopySrc});
+    device.submit(*cmd);
+    device.wait();
+
+    std::vector<float> out(input.size());
+    device.read_image(dst, as_writable(out));
+    int wrong = 0;
+    for (std::size_t k = 0; k < out.size(); ++k)
+      if (out[k] != input[k] * 4.0f - 1.0f) ++wrong;
+    CHECK(wrong == 0);
+  });
+}
+
+TEST_CASE("conformance: binding mismatches name the C++ entry and the shader binding") {
+  for_each_backend([](hal::Device& device) {
+    const hal::ShaderInfo& shader = asvgf::shaders::hal_test_scale;
+    const auto buffer = device.create_buffer({"mismatch buffer", 256, hal::BufferUsage::Storage});
+    const auto image = device.create_image({"mismatch image", 4, 4, hal::Format::RGBA32F, hal::ImageUsage::Storage});
+    const auto pipeline = device.create_pipeline({"mismatch", &shader, {}});
+
+    auto expect_mismatch = [&](const hal::BindingSetDesc& desc, std::initializer_list<const char*> mentions) {
+      try {
+        device.create_binding_set(desc);
+        FAIL_CHECK("expected BindingMismatch for " << desc.name);
+      } catch (const hal::Error& e) {
+        CHECK_MESSAGE(e.kind() == hal::ErrorKind::BindingMismatch, e.what());
+        const std::string what = e.what();
+        for (const char* m : mentions) CHECK_MESSAGE(what.find(m) != std::string::npos, what << " lacks " << m);
+      }
+    };
+    // A name the shader does not have: the message names it, the shader and what the shader has.
+    expect_mismatch({"typo set", pipeline, {{"source", buffer}, {"dst", buffer}}},
+                    {"typo set", "'source'", "hal_test_scale", "'src'", "'dst'"});
+    // A kind that differs: an image where the shader has a storage buffer.
+    expect_mismatch({"kind set", pipeline, {{"src", image}, {"dst", buffer}}},
+                    {"kind set", "'src'", "image", "storage", "hal_test_scale"});
+
+    // A specialization the shader does not declare.
+    try {
+      device.create_pipeline({"bad specialization", &shader, {{"no_such_constant", 1}}});
+      FAIL_CHECK("expected an error for an unknown specialization constant");
+    } catch (const hal::Error& e) {
+      CHECK(std::string(e.what()).find("no_such_constant") != std::string::npos);
+    }
+
+    // A binding left out is reported when a dispatch uses the set; a wrong uniform size too.
+    const auto partial = device.create_binding_set({"partial set", pipeline, {{"src", buffer}}});
+    const auto full = device.create_binding_set({"full set", pipeline, {{"src", buffer}, {"dst", buffer}}});
+    auto cmd = device.create_command_list("mismatch");
+    Uniforms uniforms(shader);
+    try {
+      cmd->dispatch({pipeline, partial, uniforms.bytes(), 1, 1, 1});
+      FAIL_CHECK("expected an error for the unbound 'dst'");
+    } catch (const hal::Error& e) {
+      CHECK(std::string(e.what()).find("dst") != std::string::npos);
+    }
+    const std::vector<std::byte> short_uniforms(2);
+    try {
+      cmd->dispatch({pipeline, full, short_uniforms, 1, 1, 1});
+      FAIL_CHECK("expected an error for a 2-byte uniform block");
+    } catch (const hal::Error& e) {
+      CHECK(e.kind() == hal::ErrorKind::InvalidUsage);
+    }
+  });
+}
+
+TEST_CASE("conformance: a ray-query pipeline needs ray queries") {
+  for_each_backend([](hal::Device& device) {
+    const hal::ShaderInfo& shader = asvgf::shaders::hal_test_ray_query_rayquery;
+    REQUIRE(shader.uses_ray_query);
+    if (device.capabilities().ray_query) {
+      device.destroy(device.create_pipeline({"ray query pipeline", &shader, {}}));
+    } else {
+      try {
+        device.create_pipeline({"ray query pipeline", &shader, {}});
+        FAIL_CHECK("expected Unsupported on a device without ray queries");
+      } catch (const hal::Error& e) {
+        CHECK(e.kind() == hal::ErrorKind::Unsupported);
+        CHECK(e.object() == "ray query pipeline");
+      }
+    }
+  });
+}
