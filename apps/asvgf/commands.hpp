@@ -8,5 +8,7 @@ namespace asvgf::cli {
 
 // Registers `info` on the app; the returned function runs it and gives the exit code.
 std::function<int()> add_info_command(CLI::App& app);
+// Registers `graph`.
+std::function<int()> add_graph_command(CLI::App& app);
 
 }  // namespace asvgf::cli

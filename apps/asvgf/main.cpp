@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
   std::vector<std::pair<CLI::App*, std::function<int()>>> commands;
   auto info = asvgf::cli::add_info_command(app);
   commands.emplace_back(app.get_subcommand("info"), info);
+  auto graph = asvgf::cli::add_graph_command(app);
+  commands.emplace_back(app.get_subcommand("graph"), graph);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,95 @@
+// `asvgf graph`: prints the compiled render graph of one frame (passes in order, barriers, passes
+// left out and why, resource placement and memory), optionally as Graphviz. Runs on the
+// recording HAL, so it needs no GPU; earlier frames are executed too, so histories exist.
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "frame/frame_graph.hpp"
+#include "graph/graph_runtime.hpp"
+#include "hal_record/record_device.hpp"
+
+namespace asvgf::cli {
+namespace {
+
+struct GraphOptions {
+  std::string scene = "cornell";
+  std::string animation = "light-exit";
+  std::string method = "asvgf";
+  std::string size = "128x128";
+  int frame = 1;
+  int atrous_iterations = 5;
+  std::string dot;
+};
+
+int run_graph(const GraphOptions& o) {
+  frame::FrameSettings settings;
+  settings.method = *frame::method_from_string(o.method);  // validated by the CLI
+  if (std::sscanf(o.size.c_str(), "%ux%u", &settings.width, &settings.height) != 2 || settings.width == 0 ||
+      settings.height == 0 || settings.width > 16384 || settings.height > 16384) {
+    std::fprintf(stderr, "asvgf graph: error: --size '%s' is not WIDTHxHEIGHT with both in 1..16384\n", o.size.c_str());
+    return 2;
+  }
+  settings.atrous_iterations = o.atrous_iterations;
+
+  hal::record::RecordDevice device;
+  // Stand-ins for the scene's acceleration structure and geometry: the graph only imports them.
+  const auto geometry = device.create_buffer(
+      {"scene.geometry", 1024, hal::BufferUsage::Storage | hal::BufferUsage::AccelBuildInput});
+  const auto tlas = device.create_tlas({"scene.tlas", 1});
+  graph::GraphRuntime runtime(device);
+  frame::FrameGraphBuilder builder(device);
+  auto commands = device.create_command_list("frames");
+  for (int f = 0;; ++f) {
+    // Only the static animation leaves everything in place after the first frame.
+    settings.scene_moved = o.animation != "static" || f == 0;
+    auto g = builder.build(settings, tlas, geometry);
+    auto compiled = runtime.compile(g);
+    if (f == o.frame) {
+      std::printf("scene %s, animation %s, method %s, %ux%u\n%s", o.scene.c_str(), o.animation.c_str(),
+                  o.method.c_str(), settings.width, settings.height, compiled.text().c_str());
+      if (!o.dot.empty()) {
+        std::ofstream out(o.dot);
+        out << compiled.dot();
+        if (!out) {
+          std::fprintf(stderr, "asvgf graph: error: cannot write '%s'\n", o.dot.c_str());
+          return 1;
+        }
+        std::printf("Graphviz written to %s\n", o.dot.c_str());
+      }
+      return 0;
+    }
+    runtime.execute(compiled, *commands);
+    device.submit(*commands);
+    commands->reset();
+  }
+}
+
+}  // namespace
+
+std::function<int()> add_graph_command(CLI::App& app) {
+  auto options = std::make_shared<GraphOptions>();
+  auto* cmd = app.add_subcommand("graph", "Print the compiled render graph of one frame (no GPU needed)");
+  cmd->add_option("--scene", options->scene, "Scene: the built-in 'cornell'")
+      ->check(CLI::IsMember({"cornell"}))
+      ->capture_default_str();
+  cmd->add_option("--animation", options->animation, "Animation of the built-in scene")
+      ->check(CLI::IsMember({"static", "light-exit", "orbit", "boxes-move"}))
+      ->capture_default_str();
+  cmd->add_option("--method", options->method, "Denoising method")
+      ->check(CLI::IsMember({"raw", "ema", "svgf", "asvgf", "reference"}))
+      ->capture_default_str();
+  cmd->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--frame", options->frame, "Frame to print (frame 0 has no history yet)")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
+  cmd->add_option("--atrous-iterations", options->atrous_iterations, "A-trous iterations (svgf, asvgf)")
+      ->check(CLI::Range(0, 16))
+      ->capture_default_str();
+  cmd->add_option("--dot", options->dot, "Also write the graph as Graphviz to this file");
+  return [options] { return run_graph(*options); };
+}
+
+}  // namespace asvgf::cli
