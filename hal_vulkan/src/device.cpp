@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
@@ -66,7 +67,9 @@ std::uint32_t select_adapter(const std::vector<AdapterReport>& adapters, const s
     // Prefer real GPUs; among equals keep enumeration order. Devices without Vulkan 1.3 come last.
     std::uint32_t best = 0;
     auto rank = [](const AdapterReport& a) {
-      const bool v13 = a.info.api_version >= "Vulkan 1.3";
+      unsigned major = 0, minor = 0;
+      std::sscanf(a.info.api_version.c_str(), "Vulkan %u.%u", &major, &minor);
+      const bool v13 = major > 1 || (major == 1 && minor >= 3);
       return type_rank(a.info.type) + (v13 ? 0 : 10);
     };
     for (std::uint32_t i = 1; i < adapters.size(); ++i)
