@@ -46,7 +46,9 @@ struct DeviceOptions {
 // empty `wanted` picks by device type). Throws NoDevice naming `wanted` and listing the adapters.
 std::uint32_t select_adapter(const std::vector<AdapterReport>& adapters, const std::string& wanted);
 
-// Creates a Vulkan device. Throws hal::Error: NoDevice (no driver, or no adapter matches),
+// Creates a Vulkan device. Command lists it creates must be destroyed before it. Uniform data and
+// TLAS instances recorded into command lists live in a 32 MiB per-device upload ring until the
+// list is reset or destroyed after wait(). Throws hal::Error: NoDevice (no driver, or no adapter matches),
 // Unsupported (Vulkan 1.3 missing, validation layer or required ray queries missing).
 std::unique_ptr<hal::Device> create_device(const DeviceOptions& options = {});
 
