@@ -1,0 +1,108 @@
+// scene/scene.hpp: what a scene is on the CPU: meshes, materials, lights, camera and keyframed
+// animation, and its evaluated state at a frame. Built-in scenes (builtin.hpp) and scene files
+// (scene_file.hpp) both produce this; scene_gpu.hpp uploads it through the HAL.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace asvgf::scene {
+
+// A scene that cannot be built or loaded; the message names the file and the place in it.
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Texture {
+  std::string name;  // file path or glTF image name, for messages
+  std::uint32_t width = 0, height = 0;
+  std::vector<std::uint8_t> rgba8;  // width*height*4, sRGB-encoded albedo
+};
+
+struct Material {
+  std::string name;
+  glm::vec3 albedo{0.8f};    // diffuse reflectance in [0,1]
+  glm::vec3 emission{0.0f};  // emitted radiance (W/(sr m^2)); > 0 makes every triangle a light
+  int albedo_texture = -1;   // index into Scene::textures, multiplies albedo; -1: none
+};
+
+struct Mesh {
+  std::string name;
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec2> uvs;               // empty, or one per position
+  std::vector<std::uint32_t> indices;       // three per triangle
+  std::vector<std::uint32_t> materials;     // one material index per triangle
+  std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(indices.size() / 3); }
+};
+
+struct Transform {
+  glm::vec3 translation{0.0f};
+  glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+  glm::vec3 scale{1.0f};
+  glm::mat4 matrix() const;  // translation * rotation * scale
+};
+
+// Keyframes on frame numbers; values between keyframes are interpolated linearly (rotation:
+// slerp), before the first and after the last they hold.
+template <typename T>
+struct Keyframe {
+  float frame = 0;
+  T value{};
+};
+
+struct Instance {
+  std::string name;
+  std::uint32_t mesh = 0;
+  std::vector<Keyframe<Transform>> transform;  // at least one
+};
+
+struct SphereLightState {
+  glm::vec3 position{0.0f};
+  float radius = 0.1f;
+  glm::vec3 emission{1.0f};  // radiance of the sphere's surface
+};
+struct SphereLight {
+  std::string name;
+  std::vector<Keyframe<SphereLightState>> state;  // at least one
+};
+
+struct CameraState {
+  glm::vec3 position{0.0f, 0.0f, 5.0f};
+  glm::vec3 target{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float vertical_fov_degrees = 45.0f;
+};
+
+struct Scene {
+  std::string name;
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<Instance> instances;
+  std::vector<SphereLight> sphere_lights;
+  std::vector<Keyframe<CameraState>> camera;  // at least one
+  int frame_count = 1;                        // length of the animation, in frames (>= 1)
+};
+
+// Everything that moves, evaluated at one frame.
+struct FrameState {
+  std::vector<glm::mat4> instance_transforms;  // object -> world, one per instance
+  std::vector<SphereLightState> lights;
+  CameraState camera;
+};
+FrameState evaluate(const Scene& scene, float frame);
+
+// True when nothing (camera, any instance, any light) differs between two evaluated frames.
+bool same_state(const FrameState& a, const FrameState& b);
+
+// Checks a scene for what would break rendering (no triangles, NaN vertex, index or material out of
+// range, bad texture): throws SceneError naming `where` and the problem.
+void validate(const Scene& scene, const std::string& where);
+
+}  // namespace asvgf::scene
