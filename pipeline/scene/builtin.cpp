@@ -1,0 +1,149 @@
+// scene/builtin.cpp: the seed's semi-closed room with two boxes and a sphere light.
+//
+// Light: a sphere of radius 0.12 with radiance 80 at (0, 0.75, 0). Its irradiance on a surface at
+// distance d facing it is E = L*pi*(r/d)^2, so the floor below (d = 1.75) gets E ~ 1.19 and, with
+// albedo 0.73, reflects radiance rho*E/pi ~ 0.28; the back wall's centre ~ 0.4. Direct light alone
+// therefore gives pixel values of about 0.2-0.5, and the bounces in the closed part of the room add
+// to that. (Power: L * 4 pi^2 r^2 ~ 45 W per channel.)
+#include "scene/builtin.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace asvgf::scene {
+
+namespace {
+
+constexpr std::uint32_t kWhite = 0, kRed = 1, kGreen = 2;
+
+// Appends a quad a-b-c-d (a cycle around its edge) as two triangles whose normal
+// cross(v1 - v0, v2 - v0) points along `facing`.
+void add_quad(Mesh& mesh, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, glm::vec3 facing,
+              std::uint32_t material) {
+  if (glm::dot(glm::cross(b - a, c - a), facing) < 0.0f) std::swap(b, d);
+  const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+  mesh.positions.insert(mesh.positions.end(), {a, b, c, d});
+  mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+  mesh.materials.insert(mesh.materials.end(), {material, material});
+}
+
+// The face of the cube [-1,1]^3 on `axis` at `side` (+1 or -1), as four corners in cycle order.
+void cube_face(int axis, float side, glm::vec3 corners[4]) {
+  glm::vec3 n(0.0f), u(0.0f), v(0.0f);
+  n[axis] = side;
+  u[(axis + 1) % 3] = 1.0f;
+  v[(axis + 2) % 3] = 1.0f;
+  corners[0] = n - u - v;
+  corners[1] = n + u - v;
+  corners[2] = n + u + v;
+  corners[3] = n - u + v;
+}
+
+Mesh room_mesh() {
+  Mesh mesh;
+  mesh.name = "room";
+  struct Wall {
+    int axis;
+    float side;
+    std::uint32_t material;
+  };
+  // Floor, ceiling, back, left (red), right (green); no front wall (z = +1 is open).
+  const Wall walls[] = {{1, -1.0f, kWhite}, {1, 1.0f, kWhite}, {2, -1.0f, kWhite}, {0, -1.0f, kRed}, {0, 1.0f, kGreen}};
+  for (const Wall& w : walls) {
+    glm::vec3 c[4];
+    cube_face(w.axis, w.side, c);
+    glm::vec3 inward(0.0f);
+    inward[w.axis] = -w.side;
+    add_quad(mesh, c[0], c[1], c[2], c[3], inward, w.material);
+  }
+  return mesh;
+}
+
+// Unit cube [-0.5,0.5]^3, faces outward; instances scale and place it.
+Mesh box_mesh() {
+  Mesh mesh;
+  mesh.name = "box";
+  for (int axis = 0; axis < 3; ++axis) {
+    for (float side : {-1.0f, 1.0f}) {
+      glm::vec3 c[4];
+      cube_face(axis, side, c);
+      glm::vec3 outward(0.0f);
+      outward[axis] = side;
+      add_quad(mesh, 0.5f * c[0], 0.5f * c[1], 0.5f * c[2], 0.5f * c[3], outward, kWhite);
+    }
+  }
+  return mesh;
+}
+
+glm::quat yaw(float degrees) { return glm::angleAxis(glm::radians(degrees), glm::vec3(0.0f, 1.0f, 0.0f)); }
+
+Instance instance(std::string name, std::uint32_t mesh, const Transform& t) {
+  return Instance{std::move(name), mesh, {{0.0f, t}}};
+}
+
+const CameraState kFrontCamera{glm::vec3(0.0f, 0.0f, 3.9f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f), 40.0f};
+
+Scene cornell(const std::string& animation) {
+  Scene s;
+  s.name = "cornell/" + animation;
+  s.frame_count = kCornellFrameCount;
+  // Classic Cornell box reflectances.
+  s.materials = {{"white", glm::vec3(0.73f), glm::vec3(0.0f), -1},
+                 {"red", glm::vec3(0.63f, 0.065f, 0.05f), glm::vec3(0.0f), -1},
+                 {"green", glm::vec3(0.14f, 0.45f, 0.091f), glm::vec3(0.0f), -1}};
+  s.meshes = {room_mesh(), box_mesh()};
+  // Boxes stand on the floor (y = -1); their footprints are apart in z so the short box can slide
+  // across in front of the tall one.
+  s.instances = {instance("room", 0, Transform{}),
+                 instance("tall_box", 1, Transform{{-0.38f, -0.4f, -0.4f}, yaw(17.0f), {0.56f, 1.2f, 0.56f}}),
+                 instance("short_box", 1, Transform{{0.38f, -0.7f, 0.35f}, yaw(-18.0f), {0.5f, 0.6f, 0.5f}})};
+  const SphereLightState light{{0.0f, 0.75f, 0.0f}, kCornellLightRadius, glm::vec3(kCornellLightRadiance)};
+  s.sphere_lights = {SphereLight{"light", {{0.0f, light}}}};
+  s.camera = {{0.0f, kFrontCamera}};
+
+  if (animation == "light-exit") {
+    // Inside for frames 0..3, then 0.4 units a frame to the right: through the wall from frame ~5,
+    // wholly outside (x > 1 + r) from frame 6, stopping at x = 2.4 at frame 9.
+    SphereLightState gone = light;
+    gone.position.x = 2.4f;
+    s.sphere_lights[0].state = {{0.0f, light}, {3.0f, light}, {9.0f, gone}};
+  } else if (animation == "orbit") {
+    // One keyframe a frame so the (linearly interpolated) position stays on the circle at every
+    // integer frame. +-14 degrees keeps the camera within x in [-1, 1], in front of the opening.
+    const float radius = glm::length(kFrontCamera.position - kFrontCamera.target);
+    s.camera.clear();
+    for (int f = 0; f <= s.frame_count; ++f) {
+      const float phase = 2.0f * std::numbers::pi_v<float> * static_cast<float>(f) / static_cast<float>(s.frame_count);
+      const float angle = glm::radians(14.0f) * std::sin(phase);
+      CameraState c = kFrontCamera;
+      c.position = c.target + radius * glm::vec3(std::sin(angle), 0.0f, std::cos(angle));
+      s.camera.push_back({static_cast<float>(f), c});
+    }
+  } else if (animation == "boxes-move") {
+    Transform rest = s.instances[2].transform[0].value;
+    Transform moved = rest;
+    moved.translation.x -= 0.6f;
+    s.instances[2].transform = {{0.0f, rest}, {3.0f, rest}, {7.0f, moved}};
+  } else if (animation != "static") {
+    std::string valid;
+    for (const std::string& a : builtin_animations()) valid += (valid.empty() ? "" : ", ") + a;
+    throw SceneError("builtin scene 'cornell': unknown animation '" + animation + "' (valid: " + valid + ")");
+  }
+  validate(s, "builtin scene '" + s.name + "'");
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::string> builtin_scenes() { return {"cornell"}; }
+
+std::vector<std::string> builtin_animations() { return {"static", "light-exit", "orbit", "boxes-move"}; }
+
+Scene builtin_scene(const std::string& name, const std::string& animation) {
+  if (name == "cornell") return cornell(animation);
+  std::string valid;
+  for (const std::string& n : builtin_scenes()) valid += (valid.empty() ? "" : ", ") + n;
+  throw SceneError("unknown builtin scene '" + name + "' (valid: " + valid + ")");
+}
+
+}  // namespace asvgf::scene

@@ -1,0 +1,39 @@
+// scene/builtin.hpp: scenes that need no files: the seed's semi-closed room ("cornell") with two
+// boxes and a sphere light, and its named animations.
+//
+// Room: [-1,1]^3, y up; floor y=-1, ceiling y=+1, back wall z=-1, red left wall x=-1, green right
+// wall x=+1, open at z=+1 where the camera stands, looking towards -z. Triangles face the inside
+// (normal = cross(v1 - v0, v2 - v0)). Instances: 0 "room", 1 "tall_box", 2 "short_box"; one sphere
+// light "light" near the ceiling.
+//
+// Animations (every one has kCornellFrameCount frames):
+//   static      nothing moves
+//   light-exit  the light holds for frames 0..3, then moves 0.4 a frame to the right through the right
+//               wall: wholly outside the room (x > 1 + radius) from frame 6 on, stopping at x = 2.4 at
+//               frame 9; held there
+//   orbit       the camera swings on an arc around the room's centre (+-14 degrees, constant distance),
+//               one full back-and-forth period over the animation
+//   boxes-move  the short box holds for frames 0..3, slides 0.6 to the left by frame 7 (in front of the
+//               tall box), uncovering the floor and back wall behind it; held there
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace asvgf::scene {
+
+inline constexpr int kCornellFrameCount = 24;
+inline constexpr float kCornellHalfExtent = 1.0f;     // the room spans [-1,1] on every axis
+inline constexpr float kCornellLightRadius = 0.12f;
+inline constexpr float kCornellLightRadiance = 80.0f;  // per channel, see builtin.cpp
+
+std::vector<std::string> builtin_scenes();
+std::vector<std::string> builtin_animations();  // animations of every built-in scene
+
+// Throws SceneError listing the valid names when `name` or `animation` is unknown. The scene's
+// name is "<name>/<animation>".
+Scene builtin_scene(const std::string& name, const std::string& animation = "static");
+
+}  // namespace asvgf::scene
