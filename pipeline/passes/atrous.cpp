@@ -1,0 +1,83 @@
+#include "passes/atrous.hpp"
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "graph/graph_runtime.hpp"
+#include "shaders/atrous.history.hpp"
+#include "shaders/atrous.plain.hpp"
+
+namespace asvgf::passes {
+namespace {
+
+struct Uniforms {
+  std::uint32_t width, height;
+  std::int32_t step;
+  std::uint32_t kernel;
+  float sigma_z, sigma_n, sigma_l;
+};
+static_assert(sizeof(Uniforms) == 28);
+
+void check(const hal::ShaderInfo& shader) {
+  check_uniform_layout(shader, sizeof(Uniforms),
+                       {{"width", offsetof(Uniforms, width)},
+                        {"height", offsetof(Uniforms, height)},
+                        {"step", offsetof(Uniforms, step)},
+                        {"kernel", offsetof(Uniforms, kernel)},
+                        {"sigma_z", offsetof(Uniforms, sigma_z)},
+                        {"sigma_n", offsetof(Uniforms, sigma_n)},
+                        {"sigma_l", offsetof(Uniforms, sigma_l)}});
+}
+
+}  // namespace
+
+AtrousPass::AtrousPass(hal::Device& device) : device_(device) {
+  check(asvgf::shaders::atrous_plain);
+  check(asvgf::shaders::atrous_history);
+  plain_ = device_.create_pipeline({"atrous", &asvgf::shaders::atrous_plain, {}});
+  history_ = device_.create_pipeline({"atrous (history tap)", &asvgf::shaders::atrous_history, {}});
+}
+
+AtrousPass::~AtrousPass() {
+  device_.destroy(plain_);
+  device_.destroy(history_);
+}
+
+void AtrousPass::add(graph::RenderGraph& graph, const Resources& r, int iteration, const DenoiseSettings& s) const {
+  const auto& decl = graph.resource(r.color_out);
+  const Uniforms u{decl.width,  decl.height, 1 << iteration, static_cast<std::uint32_t>(s.kernel),
+                   s.sigma_z, s.sigma_n,   s.sigma_l};
+  auto pass = graph.add_pass("atrous." + std::to_string(iteration + 1));
+  pass.read(r.color_in).read(r.depth_normal).write(r.color_out);
+  if (r.color_history) pass.write(*r.color_history);
+  const bool history = r.color_history.has_value();
+  pass.execute([pipeline = history ? history_ : plain_, u, r](graph::PassContext& ctx) {
+    const hal::ShaderInfo& shader = asvgf::shaders::atrous_plain;  // same workgroup size in both variants
+    std::vector<hal::BindingSetDesc::Entry> entries{{"color_in", ctx.resource(r.color_in)},
+                                                    {"depth_normal", ctx.resource(r.depth_normal)},
+                                                    {"color_out", ctx.resource(r.color_out)}};
+    if (r.color_history) entries.push_back({"color_history", ctx.resource(*r.color_history)});
+    ctx.dispatch(pipeline, entries, std::as_bytes(std::span(&u, 1)), group_count(shader, 0, u.width),
+                 group_count(shader, 1, u.height));
+  });
+}
+
+graph::ResourceId AtrousPass::add_iterations(graph::RenderGraph& graph, graph::ResourceId input,
+                                             graph::ResourceId depth_normal, graph::ResourceId color_history,
+                                             const DenoiseSettings& s) const {
+  const auto& decl = graph.resource(input);
+  const std::uint32_t w = decl.width, h = decl.height;
+  graph::ResourceId current = input;
+  for (int i = 0; i < s.atrous_iterations; ++i) {
+    const graph::ResourceId next = graph.add_image("atrous." + std::to_string(i + 1), w, h, hal::Format::RGBA16F);
+    Resources r{current, depth_normal, next, std::nullopt};
+    if (i == s.history_tap) r.color_history = color_history;
+    add(graph, r, i, s);
+    current = next;
+  }
+  return current;
+}
+
+}  // namespace asvgf::passes

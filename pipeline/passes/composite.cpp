@@ -1,0 +1,52 @@
+#include "passes/composite.hpp"
+
+#include <cstddef>
+#include <span>
+
+#include "graph/graph_runtime.hpp"
+#include "shaders/composite.hpp"
+
+namespace asvgf::passes {
+namespace {
+
+struct Uniforms {
+  std::uint32_t width, height;
+  float exposure;
+  std::uint32_t tonemap;
+};
+static_assert(sizeof(Uniforms) == 16);
+
+}  // namespace
+
+CompositePass::CompositePass(hal::Device& device) : device_(device) {
+  const hal::ShaderInfo& shader = asvgf::shaders::composite;
+  check_uniform_layout(shader, sizeof(Uniforms),
+                       {{"width", offsetof(Uniforms, width)},
+                        {"height", offsetof(Uniforms, height)},
+                        {"exposure", offsetof(Uniforms, exposure)},
+                        {"tonemap", offsetof(Uniforms, tonemap)}});
+  pipeline_ = device_.create_pipeline({"composite", &shader, {}});
+}
+
+CompositePass::~CompositePass() { device_.destroy(pipeline_); }
+
+void CompositePass::add(graph::RenderGraph& graph, const Resources& r, const DenoiseSettings& s) const {
+  const auto& decl = graph.resource(r.hdr);
+  const Uniforms u{decl.width, decl.height, s.exposure, static_cast<std::uint32_t>(s.tonemap)};
+  graph.add_pass("composite")
+      .read(r.illumination)
+      .read(r.albedo)
+      .write(r.hdr)
+      .write(r.display)
+      .execute([pipeline = pipeline_, u, r](graph::PassContext& ctx) {
+        const hal::ShaderInfo& shader = asvgf::shaders::composite;
+        ctx.dispatch(pipeline,
+                     {{"illumination", ctx.resource(r.illumination)},
+                      {"albedo", ctx.resource(r.albedo)},
+                      {"hdr", ctx.resource(r.hdr)},
+                      {"display", ctx.resource(r.display)}},
+                     std::as_bytes(std::span(&u, 1)), group_count(shader, 0, u.width), group_count(shader, 1, u.height));
+      });
+}
+
+}  // namespace asvgf::passes

@@ -1,0 +1,50 @@
+#include "passes/gradient.hpp"
+
+#include <cstddef>
+#include <span>
+
+#include "graph/graph_runtime.hpp"
+#include "shaders/gradient.hpp"
+
+namespace asvgf::passes {
+namespace {
+
+struct Uniforms {
+  std::uint32_t width, height, gradient_width, gradient_height;
+};
+static_assert(sizeof(Uniforms) == 16);
+
+}  // namespace
+
+GradientPass::GradientPass(hal::Device& device) : device_(device) {
+  const hal::ShaderInfo& shader = asvgf::shaders::gradient;
+  check_uniform_layout(shader, sizeof(Uniforms),
+                       {{"width", offsetof(Uniforms, width)},
+                        {"height", offsetof(Uniforms, height)},
+                        {"gradient_width", offsetof(Uniforms, gradient_width)},
+                        {"gradient_height", offsetof(Uniforms, gradient_height)}});
+  pipeline_ = device_.create_pipeline({"gradient", &shader, {}});
+}
+
+GradientPass::~GradientPass() { device_.destroy(pipeline_); }
+
+void GradientPass::add(graph::RenderGraph& graph, const Resources& r) const {
+  const auto& full = graph.resource(r.illumination);
+  const auto& out = graph.resource(r.gradient);
+  const Uniforms u{full.width, full.height, out.width, out.height};
+  graph.add_pass("gradient")
+      .read(r.illumination)
+      .read(r.gradient_prev)
+      .write(r.gradient)
+      .execute([pipeline = pipeline_, u, r](graph::PassContext& ctx) {
+        const hal::ShaderInfo& shader = asvgf::shaders::gradient;
+        ctx.dispatch(pipeline,
+                     {{"illumination", ctx.resource(r.illumination)},
+                      {"gradient_prev", ctx.resource(r.gradient_prev)},
+                      {"gradient", ctx.resource(r.gradient)}},
+                     std::as_bytes(std::span(&u, 1)), group_count(shader, 0, u.gradient_width),
+                     group_count(shader, 1, u.gradient_height));
+      });
+}
+
+}  // namespace asvgf::passes

@@ -1,0 +1,111 @@
+#include "passes/temporal.hpp"
+
+#include <array>
+#include <cstddef>
+#include <span>
+
+#include "graph/graph_runtime.hpp"
+#include "shaders/temporal.adaptive.hpp"
+#include "shaders/temporal.constant.hpp"
+
+namespace asvgf::passes {
+namespace {
+
+struct Uniforms {
+  std::uint32_t width, height, gradient_width, gradient_height;
+  float alpha, moments_alpha, history_cap;
+  std::uint32_t history_valid;
+};
+static_assert(sizeof(Uniforms) == 32);
+
+void check(const hal::ShaderInfo& shader) {
+  check_uniform_layout(shader, sizeof(Uniforms),
+                       {{"width", offsetof(Uniforms, width)},
+                        {"height", offsetof(Uniforms, height)},
+                        {"gradient_width", offsetof(Uniforms, gradient_width)},
+                        {"gradient_height", offsetof(Uniforms, gradient_height)},
+                        {"alpha", offsetof(Uniforms, alpha)},
+                        {"moments_alpha", offsetof(Uniforms, moments_alpha)},
+                        {"history_cap", offsetof(Uniforms, history_cap)},
+                        {"history_valid", offsetof(Uniforms, history_valid)}});
+}
+
+}  // namespace
+
+TemporalPass::TemporalPass(hal::Device& device) : device_(device) {
+  check(asvgf::shaders::temporal_constant);
+  check(asvgf::shaders::temporal_adaptive);
+  constant_ = device_.create_pipeline({"temporal (constant alpha)", &asvgf::shaders::temporal_constant, {}});
+  adaptive_ = device_.create_pipeline({"temporal (adaptive alpha)", &asvgf::shaders::temporal_adaptive, {}});
+}
+
+TemporalPass::~TemporalPass() {
+  device_.destroy(constant_);
+  device_.destroy(adaptive_);
+}
+
+void TemporalPass::add(graph::RenderGraph& graph, const Resources& r, const DenoiseSettings& s) const {
+  const bool adaptive = s.adaptive && r.gradient.has_value();
+  const auto& full = graph.resource(r.illumination);
+  Uniforms u{full.width, full.height, 1, 1, s.alpha, s.moments_alpha, s.history_cap, 0};
+  if (adaptive) {
+    const auto& g = graph.resource(*r.gradient);
+    u.gradient_width = g.width;
+    u.gradient_height = g.height;
+  }
+  auto pass = graph.add_pass("temporal");
+  pass.read(r.illumination).read(r.motion).read(r.depth_normal);
+  pass.read_history(r.depth_normal).read_history(r.color_history).read_history(r.moments);
+  if (adaptive) pass.read(*r.gradient);
+  pass.write(r.integrated).write(r.moments).read_write(r.counters);
+  const hal::PipelineHandle pipeline = adaptive ? adaptive_ : constant_;
+  const hal::ShaderInfo* shader = adaptive ? &asvgf::shaders::temporal_adaptive : &asvgf::shaders::temporal_constant;
+  pass.execute([pipeline, shader, u, r, adaptive](graph::PassContext& ctx) mutable {
+    u.history_valid = ctx.history_valid(r.depth_normal) && ctx.history_valid(r.color_history) &&
+                      ctx.history_valid(r.moments);
+    std::vector<hal::BindingSetDesc::Entry> entries{
+        {"illumination", ctx.resource(r.illumination)}, {"motion", ctx.resource(r.motion)},
+        {"depth_normal", ctx.resource(r.depth_normal)}, {"prev_depth_normal", ctx.history(r.depth_normal)},
+        {"prev_color", ctx.history(r.color_history)},   {"prev_moments", ctx.history(r.moments)},
+        {"integrated", ctx.resource(r.integrated)},     {"moments", ctx.resource(r.moments)},
+        {"counters", ctx.resource(r.counters)}};
+    if (adaptive) entries.push_back({"gradient", ctx.resource(*r.gradient)});
+    // The counters are read-modify-written by every frame: order this frame's atomics after the
+    // last frame's even when the graph saw no state change (an imported buffer).
+    ctx.commands().barrier({ctx.resource(r.counters), hal::State::ShaderWrite, hal::State::ShaderWrite});
+    ctx.dispatch(pipeline, entries, std::as_bytes(std::span(&u, 1)), group_count(*shader, 0, u.width),
+                 group_count(*shader, 1, u.height));
+  });
+}
+
+SanitizeCounters::SanitizeCounters(hal::Device& device) : device_(device) {
+  buffer_ = device_.create_buffer(
+      {"sanitize_counters", kSize, hal::BufferUsage::Storage | hal::BufferUsage::CopySrc | hal::BufferUsage::CopyDst});
+  const std::array<std::uint32_t, 2> zeros{0, 0};
+  device_.upload_buffer(buffer_, 0, std::as_bytes(std::span(zeros)));
+  state_ = hal::State::CopyDst;
+}
+
+SanitizeCounters::~SanitizeCounters() { device_.destroy(buffer_); }
+
+graph::ResourceId SanitizeCounters::import(graph::RenderGraph& graph) {
+  const graph::ResourceId id = graph.import("sanitize_counters", buffer_, state_);
+  state_ = hal::State::ShaderWrite;
+  return id;
+}
+
+SanitizeCounters::Counts SanitizeCounters::read() {
+  device_.wait();
+  if (state_ != hal::State::CopySrc) {
+    auto cmd = device_.create_command_list("sanitize_counters readback");
+    cmd->barrier({buffer_, state_, hal::State::CopySrc});
+    device_.submit(*cmd);
+    device_.wait();
+    state_ = hal::State::CopySrc;
+  }
+  std::array<std::uint32_t, 2> values{};
+  device_.read_buffer(buffer_, 0, std::as_writable_bytes(std::span(values)));
+  return {values[0], values[1]};
+}
+
+}  // namespace asvgf::passes

@@ -1,0 +1,65 @@
+// passes/temporal.hpp: the `temporal` pass (shaders/denoise/temporal.comp): sanitises this frame's
+// samples (NaN/Inf dropped and counted), reprojects last frame's colour and moments, blends them
+// with a constant or (with a gradient) adaptive alpha, and tracks the history length.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "graph/render_graph.hpp"
+#include "passes/denoise_settings.hpp"
+
+namespace asvgf::passes {
+
+class TemporalPass {
+ public:
+  struct Resources {
+    graph::ResourceId illumination = 0;   // read: RGBA32F demodulated samples of this frame
+    graph::ResourceId motion = 0;         // read: RG32F, previous minus current pixel position
+    graph::ResourceId depth_normal = 0;   // read, and its history read: persistent RGBA32F
+    graph::ResourceId color_history = 0;  // its history read: persistent RGBA16F (rgb, variance)
+    graph::ResourceId moments = 0;        // history read and written: persistent RGBA32F (E[l], E[l^2], n, 0)
+    graph::ResourceId integrated = 0;     // written: RGBA16F (rgb, temporal variance); may be color_history
+    graph::ResourceId counters = 0;       // read-written buffer of 2 uint32 (SanitizeCounters)
+    std::optional<graph::ResourceId> gradient;  // read: 1/3 res RGBA16F (delta^, Delta^); adaptive alpha
+  };
+  explicit TemporalPass(hal::Device& device);
+  ~TemporalPass();
+  TemporalPass(const TemporalPass&) = delete;
+  TemporalPass& operator=(const TemporalPass&) = delete;
+
+  // Adds "temporal". The adaptive variant is used when settings.adaptive and a gradient is given.
+  // Histories not valid this frame (first frame, GraphRuntime::reset_histories) reset every pixel.
+  void add(graph::RenderGraph& graph, const Resources& resources, const DenoiseSettings& settings) const;
+
+ private:
+  hal::Device& device_;
+  hal::PipelineHandle constant_, adaptive_;
+};
+
+// The buffer the temporal pass counts dropped samples into: [0] samples with a NaN component,
+// [1] samples with an infinite component (and no NaN). Totals since creation.
+class SanitizeCounters {
+ public:
+  static constexpr std::uint64_t kSize = 8;
+  explicit SanitizeCounters(hal::Device& device);
+  ~SanitizeCounters();
+  SanitizeCounters(const SanitizeCounters&) = delete;
+  SanitizeCounters& operator=(const SanitizeCounters&) = delete;
+
+  // Imports the buffer into this frame's graph as "sanitize_counters" (in the state it was left);
+  // call once per graph that runs the temporal pass.
+  graph::ResourceId import(graph::RenderGraph& graph);
+  struct Counts {
+    std::uint32_t nan_samples = 0, inf_samples = 0;
+  };
+  // Waits for the device and reads the totals.
+  Counts read();
+
+ private:
+  hal::Device& device_;
+  hal::BufferHandle buffer_;
+  hal::State state_ = hal::State::CopyDst;
+};
+
+}  // namespace asvgf::passes

@@ -1,0 +1,69 @@
+// reference/denoise_reference.hpp: CPU implementations, in double precision, of the denoiser passes
+// (shaders/denoise/*.comp), used by tests. Each function mirrors its shader: same taps, weights,
+// guards and clamps; only the precision differs (and fp16 stores, which the tests' tolerances cover).
+// Images use the channel layouts of the GPU resources:
+//   illumination 4 (rgb), depth_normal 4 (z, dz, oct normal), motion 2, gradient_prev 2,
+//   gradient 4 (delta, Delta, 0, 0), colour images 4 (rgb, variance), moments 4 (E[l], E[l^2], n, 0),
+//   albedo 4.
+#pragma once
+
+#include <cstdint>
+
+#include "reference/image.hpp"
+
+namespace asvgf::reference {
+
+// gradient.comp: (delta, Delta) per 3x3 stratum, ceil(w/3) x ceil(h/3).
+ImageD gradient(const ImageD& illumination, const ImageD& gradient_prev);
+
+struct GradientAtrousParams {
+  int step = 1;
+  double sigma_z = 1, sigma_n = 128;
+};
+// gradient_atrous.comp: one iteration at 1/3 resolution, guided by the full-resolution depth_normal.
+ImageD gradient_atrous(const ImageD& gradient_in, const ImageD& depth_normal, const GradientAtrousParams& params);
+
+struct TemporalParams {
+  double alpha = 0.2, moments_alpha = 0.2, history_cap = 32;
+  bool history_valid = true;
+};
+struct TemporalInputs {
+  const ImageD* illumination = nullptr;
+  const ImageD* motion = nullptr;
+  const ImageD* depth_normal = nullptr;
+  const ImageD* prev_depth_normal = nullptr;
+  const ImageD* prev_color = nullptr;
+  const ImageD* prev_moments = nullptr;
+  const ImageD* gradient = nullptr;  // null: constant alpha
+};
+struct TemporalResult {
+  ImageD integrated;  // rgb, temporal variance
+  ImageD moments;     // E[l], E[l^2], n, 0
+  std::uint32_t nan_samples = 0, inf_samples = 0;
+};
+// temporal.comp
+TemporalResult temporal(const TemporalInputs& in, const TemporalParams& params);
+
+struct VarianceParams {
+  double sigma_z = 1, sigma_n = 128, sigma_l = 4, min_history = 4;
+};
+// variance.comp: rgb colour, a variance.
+ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& depth_normal,
+                const VarianceParams& params);
+
+struct AtrousParams {
+  int step = 1;
+  int kernel = 0;  // 0: 5x5 B3 spline, 1: 3x3 box
+  double sigma_z = 1, sigma_n = 128, sigma_l = 4;
+};
+// atrous.comp: one iteration.
+ImageD atrous(const ImageD& color_in, const ImageD& depth_normal, const AtrousParams& params);
+
+struct CompositeResult {
+  ImageD hdr;      // rgb radiance, a = 1
+  ImageD display;  // sRGB-encoded in [0, 1] before the 8-bit store, a = 1
+};
+// composite.comp; tonemap 0: clamp, 1: ACES (Narkowicz).
+CompositeResult composite(const ImageD& illumination, const ImageD& albedo, double exposure, int tonemap);
+
+}  // namespace asvgf::reference

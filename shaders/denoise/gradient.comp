@@ -1,0 +1,42 @@
+// gradient.comp: the temporal gradient of A-SVGF (Schied et al. 2018) at 1/3 resolution. Per 3x3
+// stratum with a forward-projected sample (gradient_prev.y = index 0..8 of the pixel in the
+// stratum, -1 = none): delta = l_cur - l_prev and Delta = max(l_cur, l_prev). Strata without a
+// usable sample write (0, 0): they add nothing to either sum of the gradient a-trous, so the ratio
+// |delta^|/Delta^ the temporal pass uses is the one of the samples that exist.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_samplerless_texture_functions : require
+#include "common/color.glsl"
+#include "common/compute.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform Params {
+  uint width;  // full resolution
+  uint height;
+  uint gradient_width;  // ceil(width / 3)
+  uint gradient_height;
+} params;
+layout(set = 0, binding = 1) uniform texture2D illumination;
+layout(set = 0, binding = 2) uniform texture2D gradient_prev;
+layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D gradient;
+
+void main() {
+  ivec2 s = invocation_pixel();
+  if (!inside(s, params.gradient_width, params.gradient_height)) return;
+  vec2 prev = texelFetch(gradient_prev, s, 0).xy;
+  vec2 result = vec2(0.0);
+  if (prev.y >= 0.0 && prev.y < 9.0 && !not_finite(prev.x)) {
+    int index = int(prev.y);
+    ivec2 p = 3 * s + ivec2(index % 3, index / 3);
+    if (inside(p, params.width, params.height)) {
+      vec3 c = texelFetch(illumination, p, 0).rgb;
+      if (!any_not_finite(c)) {
+        float l_cur = luminance(clamp_sample(c));
+        float l_prev = clamp(prev.x, 0.0, kFp16Max);
+        result = vec2(l_cur - l_prev, max(l_cur, l_prev));
+      }
+    }
+  }
+  imageStore(gradient, s, vec4(result, 0.0, 0.0));
+}

@@ -1,0 +1,54 @@
+// gradient_atrous.comp: one edge-aware a-trous iteration over the sparse gradient (delta, Delta)
+// at 1/3 resolution (A-SVGF sec. 5.2), dispatched k times with step 2^i. Each stratum is guided by
+// its centre pixel's depth and normal; 3x3 binomial kernel. No luminance weight: the gradient
+// itself is what is being reconstructed.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_samplerless_texture_functions : require
+#include "common/compute.glsl"
+#include "common/denoise.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform Params {
+  uint width;  // full resolution (of depth_normal)
+  uint height;
+  uint gradient_width;
+  uint gradient_height;
+  int step;  // 2^iteration, in strata
+  float sigma_z;
+  float sigma_n;
+} params;
+layout(set = 0, binding = 1) uniform texture2D gradient_in;
+layout(set = 0, binding = 2) uniform texture2D depth_normal;
+layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D gradient_out;
+
+ivec2 guide_pixel(ivec2 s) { return min(3 * s + 1, ivec2(params.width, params.height) - 1); }
+
+void main() {
+  ivec2 s = invocation_pixel();
+  if (!inside(s, params.gradient_width, params.gradient_height)) return;
+  ivec2 gp = guide_pixel(s);
+  Surface center = surface_from(texelFetch(depth_normal, gp, 0));
+  vec2 sum = vec2(0.0);
+  float weights = 0.0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      ivec2 q = s + params.step * ivec2(dx, dy);
+      if (!inside(q, params.gradient_width, params.gradient_height) || any(lessThan(q, ivec2(0)))) continue;
+      vec2 g = texelFetch(gradient_in, q, 0).xy;
+      float w = binomial3(dx) * binomial3(dy);
+      if (dx != 0 || dy != 0) {
+        ivec2 gq = guide_pixel(q);
+        if (hit(center)) {
+          Surface other = surface_from(texelFetch(depth_normal, gq, 0));
+          float dist = float(abs(gq.x - gp.x) + abs(gq.y - gp.y));
+          w *= weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n);
+        }
+      }
+      sum += w * g;
+      weights += w;
+    }
+  }
+  imageStore(gradient_out, s, vec4(sum / weights, 0.0, 0.0));
+}

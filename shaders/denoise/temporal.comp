@@ -1,0 +1,140 @@
+// temporal.comp: temporal accumulation of SVGF with A-SVGF's adaptive alpha.
+// - Sanitises the 1-spp sample: a NaN/+-Inf component drops the sample (treated as missing) and
+//   counts it in `counters` (SSBO atomics; image atomics are not portable); finite samples are
+//   clamped to [0, fp16 max].
+// - Reprojects last frame's colour, moments and history length bilinearly through the motion
+//   vector, each of the 4 taps tested for depth and normal consistency; fails (history reset) when
+//   the valid taps' bilinear weight is below 0.01 (Falcor's SVGF).
+// - alpha_i = (1 - lambda) alpha + lambda, lambda = min(1, |delta^|/Delta^) (0 when Delta^ = 0)
+//   with the ADAPTIVE variant; constant alpha otherwise. Moments use their own alpha the same way.
+//   Short histories average uniformly: alpha_eff = max(alpha_i, 1/n); a gradient also shortens the
+//   history, n = n_prev (1 - lambda) + 1, capped at history_cap.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_samplerless_texture_functions : require
+#include "common/compute.glsl"
+#include "common/denoise.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform Params {
+  uint width;
+  uint height;
+  uint gradient_width;
+  uint gradient_height;
+  float alpha;
+  float moments_alpha;
+  float history_cap;
+  uint history_valid;  // 0: no history this frame (first frame, camera cut): reset everywhere
+} params;
+layout(set = 0, binding = 1) uniform texture2D illumination;
+layout(set = 0, binding = 2) uniform texture2D motion;
+layout(set = 0, binding = 3) uniform texture2D depth_normal;
+layout(set = 0, binding = 4) uniform texture2D prev_depth_normal;
+layout(set = 0, binding = 5) uniform texture2D prev_color;
+layout(set = 0, binding = 6) uniform texture2D prev_moments;
+#ifdef ADAPTIVE
+layout(set = 0, binding = 8) uniform texture2D gradient;
+#endif
+layout(set = 0, binding = 9, rgba16f) writeonly uniform image2D integrated;
+// E[l], E[l^2] and the history length n in one image: fp32 because E[l^2] leaves fp16's range
+// for l > 256, and because GLES 3.1 (ESSL target) can store neither rg32f nor r16f.
+layout(set = 0, binding = 10, rgba32f) writeonly uniform image2D moments;
+// Samples dropped since the buffer was cleared: [0] with a NaN component, [1] with an Inf (no NaN).
+layout(set = 0, binding = 11) buffer Counters {
+  uint nan_samples;
+  uint inf_samples;
+} counters;
+
+struct History {
+  vec3 color;
+  vec2 moments;
+  float len;
+  bool valid;
+};
+
+History reproject(ivec2 p, Surface cur) {
+  History h = History(vec3(0.0), vec2(0.0), 0.0, false);
+  if (params.history_valid == 0u || !hit(cur)) return h;
+  vec2 prev = vec2(p) + 0.5 + texelFetch(motion, p, 0).xy;
+  if (not_finite(prev.x) || not_finite(prev.y)) return h;
+  vec2 pos = prev - 0.5;
+  vec2 base = floor(pos);
+  vec2 f = pos - base;
+  // Far outside: nothing to fetch (also keeps ivec conversion in range).
+  if (base.x < -1.0 || base.y < -1.0 || base.x >= float(params.width) || base.y >= float(params.height)) return h;
+  ivec2 b = ivec2(base);
+  float sum_w = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    ivec2 o = ivec2(k & 1, k >> 1);
+    ivec2 q = b + o;
+    if (q.x < 0 || q.y < 0 || !inside(q, params.width, params.height)) continue;
+    float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+    if (w <= 0.0) continue;
+    vec4 mq = texelFetch(prev_moments, q, 0);
+    if (!(mq.z > 0.0)) continue;
+    if (!reprojection_consistent(cur, surface_from(texelFetch(prev_depth_normal, q, 0)))) continue;
+    h.color += w * texelFetch(prev_color, q, 0).rgb;
+    h.moments += w * mq.xy;
+    h.len += w * mq.z;
+    sum_w += w;
+  }
+  if (sum_w < 0.01) return History(vec3(0.0), vec2(0.0), 0.0, false);
+  h.color /= sum_w;
+  h.moments /= sum_w;
+  h.len /= sum_w;
+  h.valid = true;
+  return h;
+}
+
+float gradient_lambda(ivec2 p) {
+#ifdef ADAPTIVE
+  ivec2 s = min(p / 3, ivec2(params.gradient_width, params.gradient_height) - 1);
+  vec2 g = texelFetch(gradient, s, 0).xy;
+  return g.y > 0.0 ? min(1.0, abs(g.x) / g.y) : 0.0;
+#else
+  return 0.0;
+#endif
+}
+
+void main() {
+  ivec2 p = invocation_pixel();
+  if (!inside(p, params.width, params.height)) return;
+  Surface cur = surface_from(texelFetch(depth_normal, p, 0));
+  vec3 sample_rgb = texelFetch(illumination, p, 0).rgb;
+  bool missing = any_not_finite(sample_rgb);
+  if (missing) {
+    if (any_nan(sample_rgb)) atomicAdd(counters.nan_samples, 1u);
+    else atomicAdd(counters.inf_samples, 1u);
+  }
+  History h = reproject(p, cur);
+
+  vec3 color;
+  vec2 m;
+  float n;
+  if (missing) {
+    // The sample is dropped: keep what the history had, or nothing.
+    color = h.valid ? h.color : vec3(0.0);
+    m = h.valid ? h.moments : vec2(0.0);
+    n = h.valid ? min(h.len, params.history_cap) : 0.0;
+  } else {
+    vec3 c = clamp_sample(sample_rgb);
+    float l = luminance(c);
+    vec2 cm = vec2(l, l * l);
+    if (h.valid) {
+      float lambda = gradient_lambda(p);
+      n = min(h.len * (1.0 - lambda) + 1.0, params.history_cap);
+      float a = max((1.0 - lambda) * params.alpha + lambda, 1.0 / n);
+      float am = max((1.0 - lambda) * params.moments_alpha + lambda, 1.0 / n);
+      color = mix(h.color, c, a);
+      m = mix(h.moments, cm, am);
+    } else {
+      color = c;
+      m = cm;
+      n = 1.0;
+    }
+  }
+  float variance = max(0.0, m.y - m.x * m.x);
+  imageStore(integrated, p, clamp_fp16(vec4(color, variance)));
+  imageStore(moments, p, vec4(m, n, 0.0));
+}
