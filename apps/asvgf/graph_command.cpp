@@ -10,6 +10,8 @@
 #include "frame/frame_graph.hpp"
 #include "graph/graph_runtime.hpp"
 #include "hal_record/record_device.hpp"
+#include "render/scene_gpu.hpp"
+#include "scene/builtin.hpp"
 
 namespace asvgf::cli {
 namespace {
@@ -35,17 +37,20 @@ int run_graph(const GraphOptions& o) {
   settings.atrous_iterations = o.atrous_iterations;
 
   hal::record::RecordDevice device;
-  // Stand-ins for the scene's acceleration structure and geometry: the graph only imports them.
-  const auto geometry = device.create_buffer(
-      {"scene.geometry", 1024, hal::BufferUsage::Storage | hal::BufferUsage::AccelBuildInput});
-  const auto tlas = device.create_tlas({"scene.tlas", 1});
+  const scene::Scene scene = scene::builtin_scene(o.scene, o.animation);
+  render::SceneGpu scene_gpu(device, scene, device.capabilities().ray_query);
+  const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
+  frame::FrameTargets targets{
+      device.create_image({"hdr", settings.width, settings.height, hal::Format::RGBA32F, usage}), hal::State::Undefined,
+      device.create_image({"display", settings.width, settings.height, hal::Format::RGBA8Unorm, usage}),
+      hal::State::Undefined};
   graph::GraphRuntime runtime(device);
   frame::FrameGraphBuilder builder(device);
   auto commands = device.create_command_list("frames");
   for (int f = 0;; ++f) {
-    // Only the static animation leaves everything in place after the first frame.
-    settings.scene_moved = o.animation != "static" || f == 0;
-    auto g = builder.build(settings, tlas, geometry);
+    settings.scene_moved = scene_gpu.update(static_cast<float>(f)) && f > 0;
+    settings.frame = static_cast<std::uint32_t>(f);
+    auto g = builder.build(settings, scene_gpu, targets);
     auto compiled = runtime.compile(g);
     if (f == o.frame) {
       std::printf("scene %s, animation %s, method %s, %ux%u\n%s", o.scene.c_str(), o.animation.c_str(),
@@ -64,6 +69,7 @@ int run_graph(const GraphOptions& o) {
     runtime.execute(compiled, *commands);
     device.submit(*commands);
     commands->reset();
+    targets.hdr_state = targets.display_state = hal::State::CopySrc;
   }
 }
 

@@ -2,6 +2,7 @@
 #include "frame/frame_graph.hpp"
 
 #include "graph/graph_runtime.hpp"
+#include "passes/frame_passes.hpp"
 
 namespace asvgf::frame {
 
@@ -26,7 +27,7 @@ std::optional<Method> method_from_string(std::string_view name) {
   return std::nullopt;
 }
 
-FrameGraphBuilder::FrameGraphBuilder(hal::Device& device) : device_(device) {}
+FrameGraphBuilder::FrameGraphBuilder(hal::Device& device) : device_(device), pipelines_cache_(device) {}
 
 FrameGraphBuilder::~FrameGraphBuilder() {
   for (auto& [name, pipeline] : pipelines_) device_.destroy(pipeline);
@@ -82,66 +83,54 @@ void FrameGraphBuilder::add(graph::RenderGraph& g, PassSpec spec, std::uint32_t 
   specs_.push_back(std::move(spec));
 }
 
-graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, hal::AccelHandle tlas, hal::BufferHandle geometry) {
+graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render::SceneGpu& scene_gpu,
+                                            const FrameTargets& targets) {
   specs_.clear();
   graph::RenderGraph g;
   const std::uint32_t w = s.width, h = s.height;
   const std::uint32_t gw = (w + 2) / 3, gh = (h + 2) / 3;  // one gradient sample per 3x3 stratum
   using F = hal::Format;
 
-  const ResourceId scene = g.import("scene.tlas", tlas, hal::State::AccelRead);
-  const ResourceId geom = g.import("scene.geometry", geometry, hal::State::ShaderRead);
+  const passes::SceneInputs scene = passes::import_scene(g, scene_gpu, w, h);
+  const ResourceId hdr = g.import("hdr", targets.hdr, targets.hdr_state);
+  const ResourceId display = g.import("display", targets.display, targets.display_state);
   // Persistent: read next frame as histories.
   const ResourceId vbuffer = g.add_image("visibility", w, h, F::RGBA32Uint, Lifetime::Persistent);
   const ResourceId depth_normal = g.add_image("depth_normal", w, h, F::RGBA32F, Lifetime::Persistent);
   const ResourceId seeds = g.add_image("rng_seed", w, h, F::R32Uint, Lifetime::Persistent);
-  const ResourceId illumination = g.add_image("illumination", w, h, F::RGBA16F, Lifetime::Persistent);
+  const ResourceId illumination = g.add_image("illumination", w, h, F::RGBA32F, Lifetime::Persistent);
   // Transient.
-  const ResourceId motion = g.add_image("motion", w, h, F::RG16F);
-  const ResourceId albedo = g.add_image("albedo", w, h, F::RGBA8Unorm);
-  const ResourceId hdr = g.add_image("hdr", w, h, F::RGBA16F);
-  const ResourceId display = g.add_image("display", w, h, F::RGBA8Unorm);
+  const ResourceId motion = g.add_image("motion", w, h, F::RG32F);
+  const ResourceId albedo = g.add_image("albedo", w, h, F::RGBA16F);
 
-  add(g, {"gbuffer", {{"scene", scene, Use::AccelRead}, {"geometry", geom, Use::ShaderRead},
-                      {"visibility", vbuffer, Use::ShaderWrite}, {"depth_normal", depth_normal, Use::ShaderWrite},
-                      {"motion", motion, Use::ShaderWrite}, {"albedo", albedo, Use::ShaderWrite}}},
-      w, h);
+  passes::add_gbuffer(g, pipelines_cache_, scene, {vbuffer, depth_normal, motion, albedo}, w, h);
 
   const bool adaptive = s.method == Method::Asvgf;
   const std::string not_moved = "nothing in the scene, camera or lights moved since the last frame";
+  const bool gradients = adaptive && s.scene_moved;
   ResourceId gradient_seeds = 0, gradient_prev = 0, gradient_final = 0;
   if (adaptive) {
-    gradient_seeds = g.add_image("gradient_seeds", w, h, F::R32Uint);
+    gradient_seeds = g.add_image("gradient_seeds", w, h, F::RGBA32Uint);
     gradient_prev = g.add_image("gradient_prev_luminance", gw, gh, F::RG32F);
-    add(g, {"gradient_select", {{"geometry", geom, Use::ShaderRead},
-                                {"prev_visibility", vbuffer, Use::ShaderRead, true},
-                                {"prev_rng_seed", seeds, Use::ShaderRead, true},
-                                {"prev_illumination", illumination, Use::ShaderRead, true},
-                                {"visibility", vbuffer, Use::ShaderRead},
-                                {"depth_normal", depth_normal, Use::ShaderRead},
-                                {"gradient_seeds", gradient_seeds, Use::ShaderWrite},
-                                {"gradient_prev", gradient_prev, Use::ShaderWrite}}},
-        w, h, s.scene_moved ? "" : not_moved);
+    const ResourceId claims = g.add_buffer("gradient_claims", std::uint64_t(gw) * gh * 4);
+    passes::add_gradient_select(g, pipelines_cache_, scene,
+                                {vbuffer, seeds, illumination, depth_normal, claims, gradient_seeds, gradient_prev},
+                                s.frame, w, h, gradients ? "" : not_moved);
   }
-  {
-    PassSpec pt{"pathtrace", {{"scene", scene, Use::AccelRead}, {"geometry", geom, Use::ShaderRead},
-                              {"visibility", vbuffer, Use::ShaderRead}, {"albedo", albedo, Use::ShaderRead},
-                              {"illumination", illumination, Use::ShaderWrite}, {"rng_seed", seeds, Use::ShaderWrite}}};
-    if (adaptive && s.scene_moved)
-      pt.bindings.push_back({"gradient_seeds", gradient_seeds, Use::ShaderRead, false, true});
-    add(g, pt, w, h);
-  }
+  passes::add_pathtrace(g, pipelines_cache_, scene, vbuffer,
+                        gradients ? std::optional<ResourceId>(gradient_seeds) : std::nullopt, illumination, seeds,
+                        {s.frame, s.seed, s.max_bounces, s.spp}, w, h);
   if (adaptive) {
     ResourceId current = g.add_image("gradient", gw, gh, F::RG16F);
     add(g, {"gradient", {{"illumination", illumination, Use::ShaderRead}, {"gradient_prev", gradient_prev, Use::ShaderRead},
                          {"visibility", vbuffer, Use::ShaderRead}, {"gradient", current, Use::ShaderWrite}}},
-        gw, gh, s.scene_moved ? "" : not_moved);
+        gw, gh, gradients ? "" : not_moved);
     for (int i = 0; i < s.gradient_iterations; ++i) {
       const ResourceId next = g.add_image("gradient." + std::to_string(i + 1), gw, gh, F::RG16F);
       add(g, {"gradient_atrous." + std::to_string(i + 1),
               {{"gradient_in", current, Use::ShaderRead}, {"depth_normal", depth_normal, Use::ShaderRead},
                {"gradient_out", next, Use::ShaderWrite}}},
-          gw, gh, s.scene_moved ? "" : not_moved);
+          gw, gh, gradients ? "" : not_moved);
       current = next;
     }
     gradient_final = current;
@@ -150,10 +139,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, hal::AccelHa
   ResourceId final_illumination = illumination;
   if (s.method == Method::Reference) {
     const ResourceId accum = g.add_image("accumulation", w, h, F::RGBA32F, Lifetime::Persistent);
-    add(g, {"accumulate", {{"illumination", illumination, Use::ShaderRead},
-                           {"prev_accumulation", accum, Use::ShaderRead, true},
-                           {"accumulation", accum, Use::ShaderWrite}}},
-        w, h);
+    passes::add_accumulate(g, pipelines_cache_, illumination, accum, s.accumulation_valid, w, h);
     final_illumination = accum;
   } else if (s.method != Method::Raw) {
     const ResourceId color_history = g.add_image("color_history", w, h, F::RGBA16F, Lifetime::Persistent);
@@ -169,7 +155,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, hal::AccelHa
                                    {"prev_history_length", length, Use::ShaderRead, true},
                                    {"integrated", integrated, Use::ShaderWrite}, {"moments", moments, Use::ShaderWrite},
                                    {"history_length", length, Use::ShaderWrite}}};
-    if (adaptive && s.scene_moved)
+    if (gradients)
       temporal.bindings.push_back({"gradient", gradient_final, Use::ShaderRead, false, true});
     add(g, temporal, w, h);
     final_illumination = integrated;
@@ -195,8 +181,8 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, hal::AccelHa
   add(g, {"composite", {{"illumination", final_illumination, Use::ShaderRead}, {"albedo", albedo, Use::ShaderRead},
                         {"hdr", hdr, Use::ShaderWrite}, {"display", display, Use::ShaderWrite}}},
       w, h);
-  g.output(hdr);
-  g.output(display);
+  g.output(hdr, hal::State::CopySrc);
+  g.output(display, hal::State::CopySrc);
 
   // The intermediate-buffer view is an output only when asked for; otherwise it is culled.
   const ResourceId debug = g.add_image("debug_view", w, h, F::RGBA8Unorm);

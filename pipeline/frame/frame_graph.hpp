@@ -6,9 +6,10 @@
 //   svgf       + variance and the a-trous iterations (constant alpha)
 //   asvgf      + gradient_select, gradient, gradient_atrous (adaptive alpha)
 //   reference  gbuffer, pathtrace at N spp, accumulate, composite
-// Until the GPU passes land (issues 7 and 8), each pass dispatches a pipeline whose reflection is
-// derived from its declared bindings: enough for the recording HAL to check the ordering of the
-// real frame, not enough to render. FrameGraphBuilder::pass_specs() lists those bindings.
+// gbuffer, gradient_clear, gradient_select, pathtrace and accumulate are the real GPU passes
+// (passes/frame_passes.hpp). The denoiser passes that have not landed yet dispatch a pipeline whose
+// reflection is derived from their declared bindings: enough for the recording HAL to check the
+// ordering of the frame, not enough to render. FrameGraphBuilder::pass_specs() lists those.
 #pragma once
 
 #include <deque>
@@ -18,6 +19,8 @@
 #include <vector>
 
 #include "graph/render_graph.hpp"
+#include "passes/compute_pass.hpp"
+#include "render/scene_gpu.hpp"
 
 namespace asvgf::frame {
 
@@ -34,6 +37,20 @@ struct FrameSettings {
   int history_tap = 0;          // which a-trous iteration's output feeds the colour history
   bool scene_moved = true;      // false: nothing moved since last frame, the gradient passes are left out
   bool debug_view = false;      // also produce the intermediate-buffer view (demo)
+  std::uint32_t frame = 0;      // frame index: decorrelates random numbers
+  std::uint32_t seed = 0;       // --seed
+  std::uint32_t spp = 1;        // samples per pixel of the path tracer this frame
+  std::uint32_t max_bounces = 4;
+  bool accumulation_valid = false;  // reference: last frame's accumulation continues
+};
+
+// Images the frame writes its results to, owned by the caller and imported into the graph; the
+// frame leaves them in CopySrc for readback.
+struct FrameTargets {
+  hal::ImageHandle hdr;      // RGBA32F linear radiance
+  hal::State hdr_state = hal::State::Undefined;
+  hal::ImageHandle display;  // RGBA8 tonemapped
+  hal::State display_state = hal::State::Undefined;
 };
 
 // One binding of a pass: the shader binding name, the graph resource, how it is used.
@@ -54,8 +71,8 @@ class FrameGraphBuilder {
   explicit FrameGraphBuilder(hal::Device& device);
   ~FrameGraphBuilder();
 
-  // Declares the frame; `scene` resources (acceleration structure, geometry buffer) are imported.
-  graph::RenderGraph build(const FrameSettings& settings, hal::AccelHandle tlas, hal::BufferHandle geometry);
+  // Declares the frame over the scene's GPU buffers (imported) and the caller's output images.
+  graph::RenderGraph build(const FrameSettings& settings, const render::SceneGpu& scene, const FrameTargets& targets);
   const std::vector<PassSpec>& pass_specs() const { return specs_; }
 
  private:
@@ -64,6 +81,7 @@ class FrameGraphBuilder {
   hal::PipelineHandle pipeline_for(const graph::RenderGraph& g, const PassSpec& spec);
 
   hal::Device& device_;
+  passes::PipelineCache pipelines_cache_;
   std::vector<PassSpec> specs_;
   std::map<std::string, hal::PipelineHandle> pipelines_;
   // Storage behind the ShaderInfo views handed to the device.

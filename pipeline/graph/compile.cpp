@@ -281,6 +281,17 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
     }
     out.passes.push_back(std::move(cp));
   }
+  for (std::size_t o = 0; o < graph.outputs().size(); ++o) {
+    const auto final_state = graph.output_states()[o];
+    const ResourceId r = graph.outputs()[o];
+    if (!final_state || out.placement[r].where == Placement::Where::Unused) continue;
+    Track& t = track_of(r, false);
+    if (t.state != *final_state || t.pending_write || t.pending_read) {
+      out.final_barriers.push_back({r, false, t.state, *final_state});
+      t.state = *final_state;
+      t.pending_write = t.pending_read = false;
+    }
+  }
   for (ResourceId r = 0; r < res.size(); ++r) {
     if (out.placement[r].where != Placement::Where::Persistent) continue;
     for (bool history : {false, true}) {

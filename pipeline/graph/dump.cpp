@@ -52,6 +52,9 @@ std::string CompiledFrame::text() const {
         << hal::to_string(b.before) << " -> " << hal::to_string(b.after) << "\n";
     for (const auto& a : p.accesses) s << "       " << use_name(a) << " " << res[a.resource].name << "\n";
   }
+  for (const auto& b : final_barriers)
+    s << "  end: barrier " << res[b.resource].name << ": " << hal::to_string(b.before) << " -> "
+      << hal::to_string(b.after) << "\n";
   if (!culled.empty()) {
     s << "left out:\n";
     for (const auto& c : culled) s << "  " << c.name << ": " << c.reason << "\n";

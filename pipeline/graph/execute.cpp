@@ -115,12 +115,18 @@ void GraphRuntime::execute(const CompiledFrame& frame, hal::CommandList& command
     if (!barriers.empty()) commands.barrier(barriers);
     commands.begin_timer(timers_, k);
     if (pass.execute) {
-      PassContext context(*this, device_, commands, frame, pass.name);
+      PassContext context(*this, device_, commands, frame, pass);
       pass.execute(context);
     }
     commands.end_timer(timers_, k);
     commands.end_label();
     timed_passes_.push_back(pass.name);
+  }
+  if (!frame.final_barriers.empty()) {
+    std::vector<hal::Barrier> barriers;
+    for (const GraphBarrier& b : frame.final_barriers)
+      barriers.push_back({physical(frame, b.resource, false), b.before, b.after});
+    commands.barrier(barriers);
   }
   for (const auto& end : frame.persistent_end) {
     auto& p = persistent_.at(end.name);
@@ -157,8 +163,22 @@ hal::BindingSetHandle GraphRuntime::binding_set(hal::PipelineHandle pipeline,
   return set;
 }
 
-hal::Resource PassContext::resource(ResourceId id) const { return runtime_.physical(compiled_, id, false); }
-hal::Resource PassContext::history(ResourceId id) const { return runtime_.physical(compiled_, id, true); }
+void PassContext::check_declared(ResourceId id, bool history) const {
+  if (!runtime_.binding_checks_) return;
+  for (const Access& a : pass_.accesses)
+    if (a.resource == id && a.history == history) return;
+  throw GraphError("pass '" + pass_name_ + "' binds " + (history ? "the history of '" : "'") +
+                   compiled_.graph->resource(id).name + "' but does not declare it");
+}
+
+hal::Resource PassContext::resource(ResourceId id) const {
+  check_declared(id, false);
+  return runtime_.physical(compiled_, id, false);
+}
+hal::Resource PassContext::history(ResourceId id) const {
+  check_declared(id, true);
+  return runtime_.physical(compiled_, id, true);
+}
 bool PassContext::history_valid(ResourceId id) const {
   const auto& d = compiled_.graph->resource(id);
   auto it = runtime_.persistent_.find(d.name);

@@ -53,6 +53,7 @@ struct CompiledFrame {
   std::uint64_t frame = 0;
   std::vector<CompiledPass> passes;  // in execution order
   std::vector<CulledPass> culled;
+  std::vector<GraphBarrier> final_barriers;  // after the last pass: outputs into their final states
   std::vector<Placement> placement;  // per resource
   // Per resource: first and last position in `passes` that touches it (transients only).
   std::vector<std::pair<int, int>> lifetime;
@@ -98,15 +99,17 @@ class PassContext {
  private:
   friend class GraphRuntime;
   PassContext(class GraphRuntime& runtime, hal::Device& device, hal::CommandList& commands,
-              const CompiledFrame& frame, std::string pass_name)
+              const CompiledFrame& frame, const PassDecl& pass)
       : runtime_(runtime), device_(device), commands_(commands), compiled_(frame), frame_(frame.frame),
-        pass_name_(std::move(pass_name)) {}
+        pass_name_(pass.name), pass_(pass) {}
+  void check_declared(ResourceId id, bool history) const;
   GraphRuntime& runtime_;
   hal::Device& device_;
   hal::CommandList& commands_;
   const CompiledFrame& compiled_;
   std::uint64_t frame_;
   std::string pass_name_;
+  const PassDecl& pass_;
 };
 
 class GraphRuntime {
@@ -126,6 +129,10 @@ class GraphRuntime {
   std::vector<PassTiming> timings();
   // Forgets every history (camera cut, resize): the next frame sees none as valid.
   void reset_histories();
+  // On (the default): a pass may only bind resources it declared, else execute() throws
+  // GraphError. Off: what it binds is not checked (tests use this to show that the recording HAL
+  // catches the missing barriers an undeclared access causes).
+  void set_binding_checks(bool on) { binding_checks_ = on; }
   std::uint64_t frame() const { return frame_; }
 
  private:
@@ -152,6 +159,7 @@ class GraphRuntime {
   hal::BindingSetHandle binding_set(hal::PipelineHandle pipeline, const std::vector<hal::BindingSetDesc::Entry>& e);
 
   hal::Device& device_;
+  bool binding_checks_ = true;
   std::uint64_t frame_ = 0;
   std::vector<Slot> slots_;
   std::map<std::string, Persistent> persistent_;

@@ -86,7 +86,10 @@ PassBuilder RenderGraph::add_pass(std::string name) {
   return PassBuilder(*this, passes_.size() - 1);
 }
 
-void RenderGraph::output(ResourceId resource) { outputs_.push_back(resource); }
+void RenderGraph::output(ResourceId resource, std::optional<hal::State> final_state) {
+  outputs_.push_back(resource);
+  output_states_.push_back(final_state);
+}
 
 ResourceId RenderGraph::find(const std::string& name) const {
   for (std::size_t i = 0; i < resources_.size(); ++i)

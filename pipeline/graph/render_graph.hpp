@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -93,7 +94,10 @@ class RenderGraph {
   ResourceId import(std::string name, hal::Resource resource, hal::State state);
   PassBuilder add_pass(std::string name);
   // Resources the frame exists to produce; passes that contribute to none of them are culled.
-  void output(ResourceId resource);
+  // With `final_state`, the frame ends with a barrier moving the resource there (e.g. CopySrc for
+  // a host readback after the frame).
+  void output(ResourceId resource, std::optional<hal::State> final_state = std::nullopt);
+  const std::vector<std::optional<hal::State>>& output_states() const { return output_states_; }
 
   const std::vector<ResourceDecl>& resources() const { return resources_; }
   const std::vector<PassDecl>& passes() const { return passes_; }
@@ -107,6 +111,7 @@ class RenderGraph {
   std::vector<ResourceDecl> resources_;
   std::vector<PassDecl> passes_;
   std::vector<ResourceId> outputs_;
+  std::vector<std::optional<hal::State>> output_states_;
 };
 
 }  // namespace asvgf::graph

@@ -1,0 +1,144 @@
+// The noisy-input passes: uniform structs mirror the shaders' Params blocks (std140).
+#include "passes/frame_passes.hpp"
+
+#include "shaders/accumulate.hpp"
+#include "shaders/gbuffer.rayquery.hpp"
+#include "shaders/gbuffer.software.hpp"
+#include "shaders/gradient_clear.hpp"
+#include "shaders/gradient_select.hpp"
+#include "shaders/pathtrace.rayquery.hpp"
+#include "shaders/pathtrace.rayquery_gradients.hpp"
+#include "shaders/pathtrace.software.hpp"
+#include "shaders/pathtrace.software_gradients.hpp"
+
+namespace asvgf::passes {
+namespace {
+
+using graph::Use;
+
+struct GbufferParams {
+  render::GpuCamera camera, previous_camera;
+  std::uint32_t width, height, sphere_count, pad;
+};
+struct PathtraceParams {
+  render::GpuCamera camera;
+  std::uint32_t width, height, frame, seed, light_count, sphere_count, max_bounces, spp;
+};
+struct GradientClearParams {
+  std::uint32_t width, height, strata_width, strata_height;
+};
+struct GradientSelectParams {
+  render::GpuCamera camera;
+  std::uint32_t width, height, strata_width, strata_height, frame, pad0, pad1, pad2;
+};
+struct AccumulateParams {
+  std::uint32_t width, height, history_valid, pad;
+};
+
+// The scene buffers `shader` actually binds (the optimiser drops unused ones).
+std::vector<Binding> scene_bindings(const SceneInputs& s, const hal::ShaderInfo& shader) {
+  std::vector<Binding> all = {{"triangles", s.triangles},
+                              {"previous_triangles", s.previous_triangles},
+                              {"materials", s.materials},
+                              {"lights", s.lights}};
+  if (s.ray_query) all.push_back({"scene", s.tlas, Use::AccelRead});
+  else all.insert(all.end(), {{"bvh_nodes", s.bvh_nodes}, {"bvh_triangles", s.bvh_triangles}});
+  std::vector<Binding> used;
+  for (auto& b : all)
+    if (shader.find(b.name)) used.push_back(std::move(b));
+  return used;
+}
+
+std::array<std::uint32_t, 3> groups_2d(std::uint32_t w, std::uint32_t h) { return {groups_for(w, 8), groups_for(h, 8), 1}; }
+
+}  // namespace
+
+SceneInputs import_scene(graph::RenderGraph& graph, const render::SceneGpu& scene, std::uint32_t width,
+                         std::uint32_t height) {
+  SceneInputs s;
+  s.ray_query = scene.ray_query();
+  const auto read = hal::State::ShaderRead;
+  if (s.ray_query) {
+    s.tlas = graph.import("scene.tlas", scene.tlas(), hal::State::AccelRead);
+  } else {
+    s.bvh_nodes = graph.import("scene.bvh_nodes", scene.bvh_nodes(), read);
+    s.bvh_triangles = graph.import("scene.bvh_triangles", scene.bvh_triangles(), read);
+  }
+  s.triangles = graph.import("scene.triangles", scene.triangles(), read);
+  s.previous_triangles = graph.import("scene.previous_triangles", scene.previous_triangles(), read);
+  s.materials = graph.import("scene.materials", scene.materials(), read);
+  s.lights = graph.import("scene.lights", scene.lights(), read);
+  s.light_count = scene.light_count();
+  s.sphere_count = scene.sphere_light_count();
+  s.camera = render::make_camera(scene.state().camera, width, height);
+  s.previous_camera = render::make_camera(scene.previous_state().camera, width, height);
+  return s;
+}
+
+void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                 const GbufferTargets& t, std::uint32_t width, std::uint32_t height) {
+  const hal::ShaderInfo& shader = scene.ray_query ? shaders::gbuffer_rayquery : shaders::gbuffer_software;
+  const GbufferParams params{scene.camera, scene.previous_camera, width, height, scene.sphere_count, 0};
+  auto bindings = scene_bindings(scene, shader);
+  bindings.insert(bindings.end(), {{"visibility", t.visibility, Use::ShaderWrite},
+                                   {"depth_normal", t.depth_normal, Use::ShaderWrite},
+                                   {"motion", t.motion, Use::ShaderWrite},
+                                   {"albedo", t.albedo, Use::ShaderWrite}});
+  add_compute_pass(graph, "gbuffer", pipelines.get(shader, sizeof(params)), std::move(bindings), to_bytes(params),
+                   groups_2d(width, height));
+}
+
+void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                   graph::ResourceId visibility, std::optional<graph::ResourceId> gradient_seeds,
+                   graph::ResourceId illumination, graph::ResourceId rng_seed, const PathtraceSettings& s,
+                   std::uint32_t width, std::uint32_t height, const std::string& name) {
+  const hal::ShaderInfo& shader =
+      scene.ray_query ? (gradient_seeds ? shaders::pathtrace_rayquery_gradients : shaders::pathtrace_rayquery)
+                      : (gradient_seeds ? shaders::pathtrace_software_gradients : shaders::pathtrace_software);
+  const PathtraceParams params{scene.camera, width, height, s.frame, s.seed, scene.light_count, scene.sphere_count,
+                               s.max_bounces, s.spp};
+  auto bindings = scene_bindings(scene, shader);
+  bindings.insert(bindings.end(), {{"visibility", visibility},
+                                   {"illumination", illumination, Use::ShaderWrite},
+                                   {"rng_seed", rng_seed, Use::ShaderWrite}});
+  if (gradient_seeds) bindings.push_back({"gradient_seeds", *gradient_seeds});
+  add_compute_pass(graph, name, pipelines.get(shader, sizeof(params)), std::move(bindings), to_bytes(params),
+                   groups_2d(width, height));
+}
+
+void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                         const GradientSelectTargets& t, std::uint32_t frame, std::uint32_t width,
+                         std::uint32_t height, const std::string& skip_reason) {
+  const std::uint32_t sw = groups_for(width, 3), sh = groups_for(height, 3);
+  const GradientClearParams clear{width, height, sw, sh};
+  add_compute_pass(graph, "gradient_clear", pipelines.get(shaders::gradient_clear, sizeof(clear)),
+                   {{"claims", t.claims, Use::ShaderWrite},
+                    {"gradient_seeds", t.gradient_seeds, Use::ShaderWrite},
+                    {"gradient_prev", t.gradient_prev, Use::ShaderWrite}},
+                   to_bytes(clear), groups_2d(sw, sh))
+      .skip_if(!skip_reason.empty(), skip_reason);
+  const GradientSelectParams select{scene.camera, width, height, sw, sh, frame, 0, 0, 0};
+  add_compute_pass(graph, "gradient_select", pipelines.get(shaders::gradient_select, sizeof(select)),
+                   {{"triangles", scene.triangles},
+                    {"prev_visibility", t.visibility, Use::ShaderRead, true},
+                    {"prev_rng_seed", t.rng_seed, Use::ShaderRead, true},
+                    {"prev_illumination", t.illumination, Use::ShaderRead, true},
+                    {"depth_normal", t.depth_normal},
+                    {"claims", t.claims, Use::ShaderReadWrite},
+                    {"gradient_seeds", t.gradient_seeds, Use::ShaderReadWrite},
+                    {"gradient_prev", t.gradient_prev, Use::ShaderReadWrite}},
+                   to_bytes(select), groups_2d(sw, sh))
+      .skip_if(!skip_reason.empty(), skip_reason);
+}
+
+void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId illumination,
+                    graph::ResourceId accumulation, bool history_valid, std::uint32_t width, std::uint32_t height) {
+  const AccumulateParams params{width, height, history_valid ? 1u : 0u, 0};
+  add_compute_pass(graph, "accumulate", pipelines.get(shaders::accumulate, sizeof(params)),
+                   {{"illumination", illumination},
+                    {"prev_accumulation", accumulation, Use::ShaderRead, true},
+                    {"accumulation", accumulation, Use::ShaderWrite}},
+                   to_bytes(params), groups_2d(width, height));
+}
+
+}  // namespace asvgf::passes

@@ -1,0 +1,59 @@
+// passes/frame_passes.hpp: the passes that make the noisy input: scene import, gbuffer, path
+// tracing, A-SVGF gradient-sample selection, and reference accumulation.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "passes/compute_pass.hpp"
+#include "render/scene_gpu.hpp"
+
+namespace asvgf::passes {
+
+// The scene's GPU buffers as imported graph resources (read-only in the frame).
+struct SceneInputs {
+  bool ray_query = false;
+  graph::ResourceId tlas = 0, bvh_nodes = 0, bvh_triangles = 0;
+  graph::ResourceId triangles = 0, previous_triangles = 0, materials = 0, lights = 0;
+  std::uint32_t light_count = 0, sphere_count = 0;
+  render::GpuCamera camera{}, previous_camera{};
+};
+SceneInputs import_scene(graph::RenderGraph& graph, const render::SceneGpu& scene, std::uint32_t width,
+                         std::uint32_t height);
+
+struct GbufferTargets {
+  graph::ResourceId visibility, depth_normal, motion, albedo;
+};
+void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                 const GbufferTargets& targets, std::uint32_t width, std::uint32_t height);
+
+struct PathtraceSettings {
+  std::uint32_t frame = 0;        // decorrelates frames
+  std::uint32_t seed = 0;         // --seed: the whole run's random numbers
+  std::uint32_t max_bounces = 4;  // path length after the primary hit
+  std::uint32_t spp = 1;          // samples per pixel in this dispatch
+};
+// `gradient_seeds` present: the A-SVGF variant that starts carried pixels from last frame's point.
+void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                   graph::ResourceId visibility, std::optional<graph::ResourceId> gradient_seeds,
+                   graph::ResourceId illumination, graph::ResourceId rng_seed, const PathtraceSettings& settings,
+                   std::uint32_t width, std::uint32_t height, const std::string& name = "pathtrace");
+
+struct GradientSelectTargets {
+  graph::ResourceId visibility;    // persistent: last frame's version is read
+  graph::ResourceId rng_seed;      // persistent: last frame's version is read
+  graph::ResourceId illumination;  // persistent: last frame's version is read
+  graph::ResourceId depth_normal;  // this frame's
+  graph::ResourceId claims;        // transient buffer, one uint per stratum
+  graph::ResourceId gradient_seeds, gradient_prev;
+};
+// Two passes: gradient_clear, then gradient_select. Left out, with `skip_reason`, when not empty.
+void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                         const GradientSelectTargets& targets, std::uint32_t frame, std::uint32_t width,
+                         std::uint32_t height, const std::string& skip_reason);
+
+// Running mean of `illumination` into the persistent `accumulation` (restarted when !history_valid).
+void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId illumination,
+                    graph::ResourceId accumulation, bool history_valid, std::uint32_t width, std::uint32_t height);
+
+}  // namespace asvgf::passes

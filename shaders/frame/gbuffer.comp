@@ -1,0 +1,97 @@
+// gbuffer: primary visibility. Per pixel: what the camera ray through the pixel centre hits
+// (visibility), its linear depth and screen-space depth gradient, normal, albedo, and the motion
+// vector to where the same surface point was last frame.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#ifdef TRACE_RAY_QUERY
+#extension GL_EXT_ray_query : require
+#endif
+#include "common/scene_data.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0, std140) uniform Params {
+  Camera camera;
+  Camera prev_camera;
+  uint width;
+  uint height;
+  uint sphere_count;
+  uint pad;
+} params;
+
+#include "frame/scene_bindings.glsl"
+
+Camera cam;
+Camera prev_cam;
+
+layout(set = 0, binding = 6, std430) readonly buffer PreviousTriangles { Triangle values[]; } previous_triangles;
+layout(set = 0, binding = 10, rgba32ui) writeonly uniform uimage2D visibility;
+layout(set = 0, binding = 11, rgba32f) writeonly uniform image2D depth_normal;
+layout(set = 0, binding = 12, rg32f) writeonly uniform image2D motion;
+layout(set = 0, binding = 13, rgba16f) writeonly uniform image2D albedo;
+
+// View depth where the ray through `pixel` meets the plane (point, normal); 0 if parallel.
+float plane_depth(vec2 pixel, vec3 point, vec3 n) {
+  vec3 d = camera_ray(cam, pixel, params.width, params.height);
+  float denom = dot(n, d);
+  if (abs(denom) < 1e-12) return 0.0;
+  float t = dot(n, point - cam.position.xyz) / denom;
+  return dot(t * d, cam.forward.xyz);
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (p.x >= int(params.width) || p.y >= int(params.height)) return;
+  LOAD_CAMERA(cam, params.camera);
+  LOAD_CAMERA(prev_cam, params.prev_camera);
+  vec2 centre = vec2(p) + 0.5;
+  vec3 o = cam.position.xyz;
+  vec3 d = camera_ray(cam, centre, params.width, params.height);
+
+  Hit h = trace_closest(o, d, 0.0, 1e30);
+  float t_sphere;
+  int sphere = hit_sphere_lights(o, d, 0.0, h.hit ? h.t : 1e30, params.sphere_count, t_sphere);
+
+  uvec4 vis = uvec4(0u);
+  vec4 dn = vec4(0.0);
+  vec4 alb = vec4(1.0, 1.0, 1.0, 0.0);
+  vec3 prev_point;
+  bool at_infinity = false;
+  if (sphere >= 0) {
+    Light l = load_light(uint(sphere));
+    vec3 x = o + t_sphere * d;
+    vec3 n = normalize(x - l.position);
+    vis = uvec4(0xFFFFFFFFu, uint(sphere), 0u, 0u);
+    float z = dot(x - o, cam.forward.xyz);
+    float gx = abs(plane_depth(centre + vec2(1.0, 0.0), x, n) - z);
+    float gy = abs(plane_depth(centre + vec2(0.0, 1.0), x, n) - z);
+    dn = vec4(z, max(gx, gy), encode_normal(n));
+    alb = vec4(1.0);
+    prev_point = x - l.position + l.prev_position;
+  } else if (h.hit) {
+    Triangle t = load_triangle(h.triangle);
+    vec3 x = o + h.t * d;
+    vec3 n = normalize(cross(t.p1 - t.p0, t.p2 - t.p0));
+    if (dot(n, d) > 0.0) n = -n;
+    vis = uvec4(t.instance + 1u, h.triangle, floatBitsToUint(h.bary.x), floatBitsToUint(h.bary.y));
+    float z = dot(x - o, cam.forward.xyz);
+    float gx = abs(plane_depth(centre + vec2(1.0, 0.0), x, n) - z);
+    float gy = abs(plane_depth(centre + vec2(0.0, 1.0), x, n) - z);
+    dn = vec4(z, max(gx, gy), encode_normal(n));
+    alb = vec4(materials.values[t.material].albedo.rgb, 1.0);
+    prev_point = previous_triangles.values[h.triangle].p0 * (1.0 - h.bary.x - h.bary.y) +
+                 previous_triangles.values[h.triangle].p1 * h.bary.x + previous_triangles.values[h.triangle].p2 * h.bary.y;
+  } else {
+    // Nothing hit: a point at infinity along d moves only with the camera's rotation.
+    at_infinity = true;
+    prev_point = prev_cam.position.xyz + d;
+  }
+  vec3 prev = camera_project(prev_cam, prev_point, params.width, params.height);
+  vec2 mv = prev.z > 0.0 ? prev.xy - centre : vec2(-1e6);
+  if (at_infinity && prev.z <= 0.0) mv = vec2(-1e6);
+
+  imageStore(visibility, p, vis);
+  imageStore(depth_normal, p, dn);
+  imageStore(motion, p, vec4(mv, 0.0, 0.0));
+  imageStore(albedo, p, alb);
+}

@@ -1,0 +1,199 @@
+// pathtrace: 1 spp (or `spp` for references) of diffuse path tracing from the primary hit in the
+// visibility buffer: next-event estimation to sphere lights and emissive triangles combined with
+// cosine-weighted BSDF sampling by multiple importance sampling (power heuristic), Russian
+// roulette after two bounces. Writes demodulated illumination (radiance / albedo, guarded) and
+// the random seed each pixel used. With GRADIENT_SAMPLES, pixels that gradient_select gave a
+// carried seed start from last frame's surface point with last frame's seed instead.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_samplerless_texture_functions : require
+#ifdef TRACE_RAY_QUERY
+#extension GL_EXT_ray_query : require
+#endif
+#include "common/scene_data.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0, std140) uniform Params {
+  Camera camera;
+  uint width;
+  uint height;
+  uint frame;
+  uint seed;
+  uint light_count;
+  uint sphere_count;
+  uint max_bounces;
+  uint spp;
+} params;
+
+#include "frame/scene_bindings.glsl"
+#include "common/random.glsl"
+#include "common/sampling.glsl"
+
+layout(set = 0, binding = 10) uniform utexture2D visibility;
+layout(set = 0, binding = 11, rgba32f) writeonly uniform image2D illumination;
+layout(set = 0, binding = 12, r32ui) writeonly uniform uimage2D rng_seed;
+#ifdef GRADIENT_SAMPLES
+layout(set = 0, binding = 13) uniform utexture2D gradient_seeds;
+#endif
+
+Camera cam;
+const float kAlbedoGuard = 1e-3;
+
+vec3 triangle_normal(Triangle t) { return normalize(cross(t.p1 - t.p0, t.p2 - t.p0)); }
+
+float ray_offset(vec3 x) { return 1e-4 * (1.0 + max(abs(x.x), max(abs(x.y), abs(x.z)))); }
+
+// Radiance arriving at x (normal n, facing the incoming side) from one light sample, MIS-weighted
+// against BSDF sampling. Skips the emissive triangle `self` (no self-illumination).
+vec3 sample_light(vec3 x, vec3 n, uint self, inout uint state) {
+  if (params.light_count == 0u) return vec3(0.0);
+  // Pick a light by its probability (power).
+  float u = next_random(state);
+  uint index = params.light_count - 1u;
+  float acc = 0.0;
+  for (uint i = 0u; i < params.light_count; ++i) {
+    acc += lights.values[i].pdf;
+    if (u < acc) {
+      index = i;
+      break;
+    }
+  }
+  Light l = load_light(index);
+  float u1 = next_random(state);
+  float u2 = next_random(state);
+  if (l.pdf <= 0.0) return vec3(0.0);
+  vec3 dir;
+  float dist;
+  float pdf_light;  // per solid angle, including the choice of light
+  if (l.type == 0u) {
+    vec4 s = sample_sphere_cone(x, l.position, l.radius, u1, u2);
+    if (s.w <= 0.0) return vec3(0.0);
+    dir = s.xyz;
+    float t_hit;
+    int hit = hit_sphere_lights(x, dir, 0.0, 1e30, index + 1u, t_hit);
+    if (hit != int(index)) {
+      // Another sphere in front: let that one be counted by its own sample.
+      if (hit < 0) return vec3(0.0);
+    }
+    dist = t_hit;
+    pdf_light = s.w * l.pdf;
+  } else {
+    if (l.triangle == self) return vec3(0.0);
+    Triangle t = load_triangle(l.triangle);
+    vec2 b = sample_triangle(u1, u2);
+    vec3 y = t.p0 * (1.0 - b.x - b.y) + t.p1 * b.x + t.p2 * b.y;
+    vec3 to = y - x;
+    float d2 = dot(to, to);
+    dist = sqrt(d2);
+    dir = to / dist;
+    float cos_light = abs(dot(triangle_normal(t), dir));
+    if (cos_light <= 0.0 || l.area <= 0.0) return vec3(0.0);
+    pdf_light = l.pdf * d2 / (l.area * cos_light);
+    dist *= 0.9999;
+  }
+  float cos_x = dot(n, dir);
+  if (cos_x <= 0.0) return vec3(0.0);
+  float eps = ray_offset(x);
+  if (trace_any(x + n * eps, dir, 0.0, dist - eps)) return vec3(0.0);
+  float pdf_bsdf = cos_x / kPi;
+  float w = power_heuristic(pdf_light, pdf_bsdf);
+  // f = albedo / pi is applied by the caller (throughput); here: Le * cos / pdf * weight / pi.
+  return l.emission * (cos_x / kPi) / pdf_light * w;
+}
+
+// Light pdf (per solid angle) of hitting emissive triangle `tri` from x along dir at distance t.
+float emissive_triangle_pdf(uint tri, vec3 x, vec3 dir, float t) {
+  for (uint i = params.sphere_count; i < params.light_count; ++i) {
+    if (lights.values[i].triangle != tri) continue;
+    Triangle tr = load_triangle(tri);
+    float cos_light = abs(dot(triangle_normal(tr), dir));
+    float area = lights.values[i].area;
+    if (cos_light <= 0.0 || area <= 0.0) return 0.0;
+    return lights.values[i].pdf * t * t / (area * cos_light);
+  }
+  return 0.0;
+}
+
+// One path from a known first surface point; returns radiance towards the camera.
+vec3 trace_path(vec3 x, vec3 n, uint tri, vec3 albedo, vec3 emission, inout uint state) {
+  vec3 radiance = emission;
+  vec3 throughput = vec3(1.0);
+  for (uint bounce = 0u; bounce < params.max_bounces; ++bounce) {
+    radiance += throughput * albedo * sample_light(x, n, tri, state);
+    // BSDF sample: cosine-weighted, so f * cos / pdf = albedo.
+    float u1 = next_random(state);
+    float u2 = next_random(state);
+    vec3 dir = sample_cosine(n, u1, u2);
+    float pdf_bsdf = max(dot(n, dir), 0.0) / kPi;
+    throughput *= albedo;
+    vec3 o = x + n * ray_offset(x);
+    Hit h = trace_closest(o, dir, 0.0, 1e30);
+    float t_sphere;
+    int sphere = hit_sphere_lights(o, dir, 0.0, h.hit ? h.t : 1e30, params.sphere_count, t_sphere);
+    if (sphere >= 0) {
+      Light l = load_light(uint(sphere));
+      float pdf_light = l.pdf * sphere_cone_pdf(o, l.position, l.radius);
+      radiance += throughput * l.emission * power_heuristic(pdf_bsdf, pdf_light);
+      break;
+    }
+    if (!h.hit) break;
+    Triangle t = load_triangle(h.triangle);
+    Material m;
+    m.albedo = materials.values[t.material].albedo;
+    m.emission = materials.values[t.material].emission;
+    if (m.emission.a > 0.0) {
+      float pdf_light = emissive_triangle_pdf(h.triangle, o, dir, h.t);
+      radiance += throughput * m.emission.rgb * power_heuristic(pdf_bsdf, pdf_light);
+    }
+    x = o + h.t * dir;
+    n = triangle_normal(t);
+    if (dot(n, dir) > 0.0) n = -n;
+    tri = h.triangle;
+    albedo = m.albedo.rgb;
+    // Russian roulette after two bounces, by the throughput's largest component.
+    if (bounce >= 1u) {
+      float q = min(0.95, max(throughput.r, max(throughput.g, throughput.b)));
+      if (q <= 0.0 || next_random(state) >= q) break;
+      throughput /= q;
+    }
+  }
+  return radiance;
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (p.x >= int(params.width) || p.y >= int(params.height)) return;
+  LOAD_CAMERA(cam, params.camera);
+  uvec4 vis = texelFetch(visibility, p, 0);
+  uint seed = pixel_seed(uvec2(p), params.width, params.frame, params.seed);
+#ifdef GRADIENT_SAMPLES
+  uvec4 carried = texelFetch(gradient_seeds, p, 0);
+  if (carried.x != 0u) {
+    // Last frame's sample, forward-projected here: same surface point, same random numbers.
+    seed = carried.x;
+    Triangle t = load_triangle(carried.y);
+    vis = uvec4(t.instance + 1u, carried.y, carried.z, carried.w);
+  }
+#endif
+  vec3 radiance = vec3(0.0);
+  vec3 albedo = vec3(1.0);
+  if (vis.x == 0xFFFFFFFFu) {
+    radiance = lights.values[vis.y].emission;  // a sphere light seen directly
+  } else if (vis.x != 0u) {
+    Triangle t = load_triangle(vis.y);
+    vec2 b = vec2(uintBitsToFloat(vis.z), uintBitsToFloat(vis.w));
+    vec3 x = t.p0 * (1.0 - b.x - b.y) + t.p1 * b.x + t.p2 * b.y;
+    vec3 n = triangle_normal(t);
+    if (dot(n, x - cam.position.xyz) > 0.0) n = -n;
+    albedo = materials.values[t.material].albedo.rgb;
+    vec3 emission = materials.values[t.material].emission.rgb;
+    for (uint s = 0u; s < params.spp; ++s) {
+      uint state = s == 0u ? seed : pcg_hash(seed + s);
+      radiance += trace_path(x, n, vis.y, albedo, emission, state);
+    }
+    radiance /= float(max(params.spp, 1u));
+  }
+  imageStore(illumination, p, vec4(radiance / max(albedo, vec3(kAlbedoGuard)), 0.0));
+  imageStore(rng_seed, p, uvec4(seed));
+}

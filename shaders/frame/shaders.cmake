@@ -1,0 +1,11 @@
+# Shaders of the frame's visibility, path tracing and gradient-sample passes. Tracing shaders come
+# in two variants: ray queries, and the software BVH for devices without them.
+asvgf_add_shader(gbuffer SOURCE frame/gbuffer.comp
+                 VARIANTS rayquery=TRACE_RAY_QUERY software=TRACE_SOFTWARE)
+asvgf_add_shader(pathtrace SOURCE frame/pathtrace.comp
+                 VARIANTS rayquery=TRACE_RAY_QUERY software=TRACE_SOFTWARE
+                          rayquery_gradients=TRACE_RAY_QUERY,GRADIENT_SAMPLES
+                          software_gradients=TRACE_SOFTWARE,GRADIENT_SAMPLES)
+asvgf_add_shader(gradient_clear SOURCE frame/gradient_clear.comp)
+asvgf_add_shader(gradient_select SOURCE frame/gradient_select.comp)
+asvgf_add_shader(accumulate SOURCE frame/accumulate.comp)
