@@ -1,0 +1,288 @@
+// Helpers of the denoiser tests (pipeline and stability): fp16 conversion and tolerances, random
+// G-buffer-like inputs, and a harness that runs render graphs on a device with inputs uploaded
+// into imported images and results copied back to the host.
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <random>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "graph/graph_runtime.hpp"
+#include "hal/hal.hpp"
+#include "reference/image.hpp"
+#include "reference/octahedral.hpp"
+
+namespace denoise_test {
+
+using asvgf::reference::ImageD;
+
+// ---- fp16 --------------------------------------------------------------------------------------
+inline std::uint16_t float_to_half(float f) {  // round to nearest even; overflow to Inf
+  const std::uint32_t x = std::bit_cast<std::uint32_t>(f);
+  const std::uint32_t sign = (x >> 16) & 0x8000u;
+  const std::uint32_t abs = x & 0x7fffffffu;
+  if (abs >= 0x7f800000u) return static_cast<std::uint16_t>(sign | 0x7c00u | (abs > 0x7f800000u ? 0x200u : 0u));
+  if (abs >= 0x477ff000u) return static_cast<std::uint16_t>(sign | 0x7c00u);
+  if (abs < 0x38800000u) {  // subnormal half (or zero)
+    const float scaled = std::bit_cast<float>(abs) * 16777216.0f;  // exact: times 2^24
+    return static_cast<std::uint16_t>(sign | static_cast<std::uint32_t>(std::nearbyint(scaled)));
+  }
+  const std::uint32_t rounded = abs + 0xfffu + ((abs >> 13) & 1u);
+  return static_cast<std::uint16_t>(sign | ((rounded - 0x38000000u) >> 13));
+}
+inline float half_to_float(std::uint16_t h) {
+  const std::uint32_t sign = (h & 0x8000u) << 16, exp = (h >> 10) & 0x1fu, man = h & 0x3ffu;
+  float v;
+  if (exp == 0) v = std::ldexp(static_cast<float>(man), -24);
+  else if (exp == 31) v = man ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
+  else v = std::ldexp(static_cast<float>(man | 0x400u), static_cast<int>(exp) - 25);
+  return sign ? -v : v;
+}
+// One fp16 ulp at magnitude |v| (the error of one fp16 store, rounded either way).
+inline double fp16_ulp(double v) {
+  const double a = std::abs(v);
+  if (a < std::ldexp(1.0, -14)) return std::ldexp(1.0, -24);
+  return std::ldexp(1.0, static_cast<int>(std::floor(std::log2(a))) - 10);
+}
+
+// ---- Image bytes -------------------------------------------------------------------------------
+inline std::vector<std::byte> encode(const ImageD& img, hal::Format format) {
+  const std::uint32_t channels = hal::format_channels(format);
+  std::vector<std::byte> out(static_cast<std::size_t>(img.width) * img.height * hal::format_size(format));
+  std::size_t at = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      for (std::uint32_t c = 0; c < channels; ++c) {
+        const double v = static_cast<int>(c) < img.channels ? img.at(x, y, static_cast<int>(c)) : 0.0;
+        switch (format) {
+          case hal::Format::R16F: case hal::Format::RG16F: case hal::Format::RGBA16F: {
+            const std::uint16_t h = float_to_half(static_cast<float>(v));
+            std::memcpy(out.data() + at, &h, 2), at += 2;
+            break;
+          }
+          case hal::Format::R8Unorm: case hal::Format::RGBA8Unorm: {
+            const auto b = static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+            std::memcpy(out.data() + at, &b, 1), at += 1;
+            break;
+          }
+          case hal::Format::R32Uint: case hal::Format::RG32Uint: case hal::Format::RGBA32Uint: {
+            const auto u = static_cast<std::uint32_t>(v);
+            std::memcpy(out.data() + at, &u, 4), at += 4;
+            break;
+          }
+          default: {
+            const auto f = static_cast<float>(v);
+            std::memcpy(out.data() + at, &f, 4), at += 4;
+          }
+        }
+      }
+  return out;
+}
+
+inline ImageD decode(std::span<const std::byte> bytes, int w, int h, hal::Format format) {
+  const int channels = static_cast<int>(hal::format_channels(format));
+  ImageD out(w, h, std::max(channels, 4));
+  std::size_t at = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < channels; ++c) {
+        switch (format) {
+          case hal::Format::R16F: case hal::Format::RG16F: case hal::Format::RGBA16F: {
+            std::uint16_t v;
+            std::memcpy(&v, bytes.data() + at, 2), at += 2;
+            out.at(x, y, c) = half_to_float(v);
+            break;
+          }
+          case hal::Format::R8Unorm: case hal::Format::RGBA8Unorm: {
+            out.at(x, y, c) = static_cast<double>(static_cast<std::uint8_t>(bytes[at])) / 255.0, at += 1;
+            break;
+          }
+          default: {
+            float f;
+            std::memcpy(&f, bytes.data() + at, 4), at += 4;
+            out.at(x, y, c) = f;
+          }
+        }
+      }
+  return out;
+}
+
+// What the GPU sees after an upload in `format` (fp16 rounding, fp32 rounding).
+inline ImageD quantize(const ImageD& img, hal::Format format) {
+  ImageD q = decode(encode(img, format), img.width, img.height, format);
+  ImageD out(img.width, img.height, img.channels);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      for (int c = 0; c < img.channels; ++c) out.at(x, y, c) = c < q.channels ? q.at(x, y, c) : 0.0;
+  return out;
+}
+
+// ---- Random inputs -----------------------------------------------------------------------------
+struct Random {
+  std::mt19937 rng;
+  explicit Random(std::uint32_t seed) : rng(seed) {}
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+  bool chance(double p) { return uniform(0, 1) < p; }
+};
+
+// depth_normal: a tilted plane with steps, 5% misses, normals near +z with a few sharp turns.
+inline ImageD random_depth_normal(Random& r, int w, int h, double miss = 0.05) {
+  ImageD dn(w, h, 4);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (r.chance(miss)) continue;  // z = 0: no hit
+      const double step = (x / 5 + y / 7) % 3 == 0 ? 1.5 : 0.0;
+      dn.at(x, y, 0) = static_cast<float>(3.0 + 0.02 * x + 0.03 * y + step + r.uniform(0, 0.01));
+      dn.at(x, y, 1) = static_cast<float>(r.uniform(0.0, 0.06));
+      std::array<float, 3> n{static_cast<float>(r.uniform(-0.3, 0.3)), static_cast<float>(r.uniform(-0.3, 0.3)), 1.0f};
+      if (r.chance(0.1)) n = {static_cast<float>(r.uniform(-1, 1)), static_cast<float>(r.uniform(-1, 1)),
+                              static_cast<float>(r.uniform(-1, 1))};
+      if (std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]) < 1e-3f) n = {0, 0, 1};
+      const auto e = asvgf::reference::oct_encode<float>(n);
+      dn.at(x, y, 2) = e[0];
+      dn.at(x, y, 3) = e[1];
+    }
+  return dn;
+}
+
+inline ImageD random_color(Random& r, int w, int h, double lo, double hi, double variance_hi) {
+  ImageD img(w, h, 4);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      for (int c = 0; c < 3; ++c) img.at(x, y, c) = static_cast<float>(r.uniform(lo, hi));
+      img.at(x, y, 3) = static_cast<float>(r.uniform(0, variance_hi));
+    }
+  return img;
+}
+
+// ---- Comparison --------------------------------------------------------------------------------
+// Largest |got - want| / tolerance(want) over channels [0, channels); <= 1 passes.
+struct Compare {
+  double worst_ratio = 0, worst_error = 0;
+  int worst_x = -1, worst_y = -1, worst_c = -1;
+  double got = 0, want = 0;
+};
+inline Compare compare(const ImageD& got, const ImageD& want, int channels,
+                       const std::function<double(double)>& tolerance) {
+  Compare out;
+  for (int y = 0; y < want.height; ++y)
+    for (int x = 0; x < want.width; ++x)
+      for (int c = 0; c < channels; ++c) {
+        const double g = got.at(x, y, c), w = want.at(x, y, c);
+        const double err = std::abs(g - w);
+        const double ratio = std::isfinite(g) ? err / tolerance(w) : 1e30;
+        if (ratio > out.worst_ratio) out = {ratio, err, x, y, c, g, w};
+      }
+  return out;
+}
+#define DENOISE_CHECK_CLOSE(result, what)                                                                         \
+  CHECK_MESSAGE((result).worst_ratio <= 1.0, what << ": worst at (" << (result).worst_x << "," << (result).worst_y \
+                                                  << ") channel " << (result).worst_c << ": got " << (result).got    \
+                                                  << ", want " << (result).want << " (" << (result).worst_ratio       \
+                                                  << " x tolerance)")
+
+// ---- Running graphs on a device ----------------------------------------------------------------
+class GraphHarness {
+ public:
+  explicit GraphHarness(hal::Device& device)
+      : device_(device), runtime_(device), cmd_(device.create_command_list("denoise test frame")) {}
+  ~GraphHarness() {
+    device_.wait();
+    cmd_.reset();
+    release();
+  }
+  GraphHarness(const GraphHarness&) = delete;
+  GraphHarness& operator=(const GraphHarness&) = delete;
+
+  asvgf::graph::GraphRuntime& runtime() { return runtime_; }
+
+  // A transient image of the graph holding `data` (uploaded, then copied in by a pass), read by passes.
+  asvgf::graph::ResourceId input(asvgf::graph::RenderGraph& g, const std::string& name, const ImageD& data,
+                                 hal::Format format) {
+    const auto id = g.add_image(name, static_cast<std::uint32_t>(data.width), static_cast<std::uint32_t>(data.height),
+                                format);
+    fill(g, id, data);
+    return id;
+  }
+  // Copies `data` into graph resource `target` (e.g. a persistent image) with a pass "fill.<name>".
+  void fill(asvgf::graph::RenderGraph& g, asvgf::graph::ResourceId target, const ImageD& data) {
+    const auto decl = g.resource(target);
+    const auto image = device_.create_image({"test upload " + decl.name, decl.width, decl.height, decl.format,
+                                             hal::ImageUsage::CopySrc | hal::ImageUsage::CopyDst});
+    temporaries_.push_back(image);
+    device_.upload_image(image, encode(data, decl.format));
+    const auto src = g.import("upload " + decl.name, image, hal::State::CopyDst);
+    g.add_pass("fill." + decl.name)
+        .read(src, asvgf::graph::Use::CopySrc)
+        .write(target, asvgf::graph::Use::CopyDst)
+        .execute([src, target](asvgf::graph::PassContext& ctx) { ctx.commands().copy_image(ctx.image(src), ctx.image(target)); });
+    if (decl.lifetime == asvgf::graph::Lifetime::Persistent) g.output(target);
+  }
+  // After run(), `*out` holds the resource's contents (as doubles, 4 channels at least).
+  void readback(asvgf::graph::RenderGraph& g, asvgf::graph::ResourceId resource, ImageD* out) {
+    const auto decl = g.resource(resource);
+    const auto image = device_.create_image({"test readback " + decl.name, decl.width, decl.height, decl.format,
+                                             hal::ImageUsage::CopySrc | hal::ImageUsage::CopyDst});
+    temporaries_.push_back(image);
+    const auto dst = g.import("readback " + decl.name, image, hal::State::Undefined);
+    g.add_pass("readback." + decl.name)
+        .read(resource, asvgf::graph::Use::CopySrc)
+        .write(dst, asvgf::graph::Use::CopyDst)
+        .execute([resource, dst](asvgf::graph::PassContext& ctx) {
+          ctx.commands().copy_image(ctx.image(resource), ctx.image(dst));
+        });
+    g.output(dst);
+    readbacks_.push_back({image, out, decl.width, decl.height, decl.format});
+  }
+  // Compiles, executes, submits and waits; then reads back and releases the frame's test images.
+  void run(const asvgf::graph::RenderGraph& g) {
+    const auto compiled = runtime_.compile(g);
+    runtime_.execute(compiled, *cmd_);
+    device_.submit(*cmd_);
+    device_.wait();
+    cmd_->reset();
+    if (!readbacks_.empty()) {
+      for (const auto& r : readbacks_) cmd_->barrier({r.image, hal::State::CopyDst, hal::State::CopySrc});
+      device_.submit(*cmd_);
+      device_.wait();
+      cmd_->reset();
+      for (const auto& r : readbacks_) {
+        std::vector<std::byte> bytes(std::size_t{r.width} * r.height * hal::format_size(r.format));
+        device_.read_image(r.image, bytes);
+        *r.out = decode(bytes, static_cast<int>(r.width), static_cast<int>(r.height), r.format);
+      }
+    }
+    release();
+  }
+
+ private:
+  void release() {
+    for (auto image : temporaries_) device_.destroy(image);
+    temporaries_.clear();
+    readbacks_.clear();
+  }
+  struct Readback {
+    hal::ImageHandle image;
+    ImageD* out;
+    std::uint32_t width, height;
+    hal::Format format;
+  };
+  hal::Device& device_;
+  asvgf::graph::GraphRuntime runtime_;
+  std::unique_ptr<hal::CommandList> cmd_;
+  std::vector<hal::ImageHandle> temporaries_;
+  std::vector<Readback> readbacks_;
+};
+
+}  // namespace denoise_test

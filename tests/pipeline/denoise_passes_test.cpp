@@ -1,0 +1,323 @@
+// Each denoiser pass on the Vulkan device (lavapipe, validation and synchronization validation on:
+// any message fails the test) against its double-precision CPU reference, on seeded random inputs
+// at sizes that are not multiples of the 8x8 workgroup.
+//
+// Tolerances follow from the storage formats. Inputs are quantised to their upload formats first,
+// so the GPU and the reference start from the same values. Then:
+//  - fp16 outputs (RGBA16F): one fp16 ulp of the reference value per store (lavapipe rounds toward
+//    zero, others to nearest; both are within one ulp), plus fp32 arithmetic error, bounded by
+//    1e-5 x the magnitude of the values summed (exp/pow/division in fp32 vs double);
+//  - fp32 outputs: the fp32 arithmetic error alone (1e-5 x magnitude);
+//  - RGBA8 display: one 8-bit step (rounding of the store plus fp32 tone-curve error).
+#include <doctest/doctest.h>
+
+#include "pipeline/denoise_harness.hpp"
+#include "passes/atrous.hpp"
+#include "passes/composite.hpp"
+#include "passes/gradient.hpp"
+#include "passes/gradient_atrous.hpp"
+#include "passes/temporal.hpp"
+#include "passes/variance.hpp"
+#include "reference/denoise_reference.hpp"
+#include "vulkan/validated_device.hpp"
+
+using namespace denoise_test;
+using asvgf::graph::Lifetime;
+using asvgf::graph::RenderGraph;
+using F = hal::Format;
+namespace ref = asvgf::reference;
+namespace passes = asvgf::passes;
+
+namespace {
+
+constexpr int kSizes[][2] = {{17, 13}, {32, 32}, {9, 5}};
+
+auto fp16_tolerance(double magnitude) {
+  return [magnitude](double want) { return fp16_ulp(want) + 1e-5 * magnitude; };
+}
+auto fp32_tolerance(double magnitude) {
+  return [magnitude](double) { return 1e-5 * magnitude; };
+}
+
+}  // namespace
+
+TEST_CASE("pipeline: gradient pass matches the CPU reference") {
+  ValidatedDevice device;
+  passes::GradientPass pass(*device);
+  for (const auto& size : kSizes) {
+    const int w = size[0], h = size[1], gw = (w + 2) / 3, gh = (h + 2) / 3;
+    CAPTURE(w);
+    CAPTURE(h);
+    Random r(11u + static_cast<std::uint32_t>(w));
+    ImageD illumination = random_color(r, w, h, 0, 4, 0);
+    illumination.at(1, 1, 0) = std::numeric_limits<double>::quiet_NaN();  // a dropped sample
+    illumination.at(2, 0, 1) = std::numeric_limits<double>::infinity();
+    illumination.at(0, 1, 2) = 1e6;  // clamped to fp16 max
+    ImageD prev(gw, gh, 2);
+    for (int y = 0; y < gh; ++y)
+      for (int x = 0; x < gw; ++x) {
+        prev.at(x, y, 0) = static_cast<float>(r.uniform(0, 4));
+        prev.at(x, y, 1) = r.chance(0.2) ? -1.0 : static_cast<double>(static_cast<int>(r.uniform(0, 9)));
+      }
+    prev.at(0, 0, 1) = 4;  // the pixel with the NaN
+    GraphHarness harness(*device);
+    RenderGraph g;
+    const auto in = harness.input(g, "illumination", illumination, F::RGBA32F);
+    const auto gp = harness.input(g, "gradient_prev", prev, F::RG32F);
+    const auto out = g.add_image("gradient", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh), F::RGBA16F);
+    pass.add(g, {in, gp, out});
+    ImageD got;
+    harness.readback(g, out, &got);
+    harness.run(g);
+    const ImageD want = ref::gradient(quantize(illumination, F::RGBA32F), quantize(prev, F::RG32F));
+    DENOISE_CHECK_CLOSE(compare(got, want, 2, fp16_tolerance(4)), "gradient");
+    CHECK(got.at(0, 0, 0) == 0.0);
+    CHECK(got.at(0, 0, 1) == 0.0);
+  }
+}
+
+TEST_CASE("pipeline: gradient_atrous pass matches the CPU reference at steps 1, 2 and 4") {
+  ValidatedDevice device;
+  passes::GradientAtrousPass pass(*device);
+  passes::DenoiseSettings settings;
+  for (const auto& size : kSizes) {
+    const int w = size[0], h = size[1], gw = (w + 2) / 3, gh = (h + 2) / 3;
+    Random r(23u + static_cast<std::uint32_t>(w));
+    const ImageD dn = random_depth_normal(r, w, h);
+    ImageD grad(gw, gh, 4);
+    for (int y = 0; y < gh; ++y)
+      for (int x = 0; x < gw; ++x)
+        if (!r.chance(0.3)) grad.at(x, y, 0) = r.uniform(-2, 2), grad.at(x, y, 1) = r.uniform(0, 3);
+    for (int iteration = 0; iteration < 3; ++iteration) {
+      CAPTURE(w);
+      CAPTURE(iteration);
+      GraphHarness harness(*device);
+      RenderGraph g;
+      const auto gin = harness.input(g, "gradient_in", grad, F::RGBA16F);
+      const auto dni = harness.input(g, "depth_normal", dn, F::RGBA32F);
+      const auto out = g.add_image("gradient_out", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh),
+                                   F::RGBA16F);
+      pass.add(g, {gin, dni, out}, iteration, settings);
+      ImageD got;
+      harness.readback(g, out, &got);
+      harness.run(g);
+      const ImageD want = ref::gradient_atrous(quantize(grad, F::RGBA16F), quantize(dn, F::RGBA32F),
+                                               {1 << iteration, settings.sigma_z, settings.sigma_n});
+      DENOISE_CHECK_CLOSE(compare(got, want, 2, fp16_tolerance(3)), "gradient_atrous");
+    }
+  }
+}
+
+namespace {
+
+struct TemporalCase {
+  ImageD illumination, motion, dn, prev_dn, prev_color, prev_moments, gradient;
+};
+
+TemporalCase random_temporal_case(std::uint32_t seed, int w, int h) {
+  Random r(seed);
+  TemporalCase c;
+  c.illumination = random_color(r, w, h, 0, 4, 0);
+  for (int k = 0; k < w * h / 25 + 2; ++k) {  // ~4% dropped samples
+    const int x = static_cast<int>(r.uniform(0, w)), y = static_cast<int>(r.uniform(0, h));
+    c.illumination.at(x, y, static_cast<int>(r.uniform(0, 3))) =
+        r.chance(0.5) ? std::numeric_limits<double>::quiet_NaN()
+                      : (r.chance(0.5) ? 1.0 : -1.0) * std::numeric_limits<double>::infinity();
+  }
+  c.motion = ImageD(w, h, 2);
+  for (auto& v : c.motion.data) v = static_cast<float>(r.uniform(-1.5, 1.5));
+  c.motion.at(0, 0, 0) = -40;  // off screen
+  c.dn = random_depth_normal(r, w, h);
+  c.prev_dn = c.dn;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (r.chance(0.1)) c.prev_dn.at(x, y, 0) = c.dn.at(x, y, 0) * 1.3;  // disocclusion
+  c.prev_color = random_color(r, w, h, 0, 4, 1);
+  c.prev_moments = ImageD(w, h, 4);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double m1 = r.uniform(0, 4);
+      c.prev_moments.at(x, y, 0) = static_cast<float>(m1);
+      c.prev_moments.at(x, y, 1) = static_cast<float>(m1 * m1 + r.uniform(0, 2));
+      c.prev_moments.at(x, y, 2) = r.chance(0.1) ? 0.0 : static_cast<double>(static_cast<int>(r.uniform(1, 40)));
+    }
+  c.gradient = ImageD((w + 2) / 3, (h + 2) / 3, 4);
+  for (int y = 0; y < c.gradient.height; ++y)
+    for (int x = 0; x < c.gradient.width; ++x)
+      if (!r.chance(0.2)) c.gradient.at(x, y, 0) = r.uniform(-2, 2), c.gradient.at(x, y, 1) = r.uniform(0, 3);
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("pipeline: temporal pass matches the CPU reference (constant and adaptive alpha, dropped samples counted)") {
+  ValidatedDevice device;
+  passes::TemporalPass pass(*device);
+  for (const bool adaptive : {false, true}) {
+    for (const auto& size : kSizes) {
+      const int w = size[0], h = size[1];
+      CAPTURE(adaptive);
+      CAPTURE(w);
+      const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
+      const TemporalCase c = random_temporal_case(37u + static_cast<std::uint32_t>(w), w, h);
+      passes::DenoiseSettings settings;
+      settings.adaptive = adaptive;
+      passes::SanitizeCounters counters(*device);
+      GraphHarness harness(*device);
+      ImageD integrated, moments;
+      // Frame 0 writes last frame's state into the persistent resources; frame 1 runs the pass.
+      for (int frame = 0; frame < 2; ++frame) {
+        RenderGraph g;
+        const auto dn = g.add_image("depth_normal", uw, uh, F::RGBA32F, Lifetime::Persistent);
+        const auto color = g.add_image("color_history", uw, uh, F::RGBA16F, Lifetime::Persistent);
+        const auto mom = g.add_image("moments", uw, uh, F::RGBA32F, Lifetime::Persistent);
+        if (frame == 0) {
+          harness.fill(g, dn, c.prev_dn);
+          harness.fill(g, color, c.prev_color);
+          harness.fill(g, mom, c.prev_moments);
+        } else {
+          harness.fill(g, dn, c.dn);
+          passes::TemporalPass::Resources res;
+          res.illumination = harness.input(g, "illumination", c.illumination, F::RGBA32F);
+          res.motion = harness.input(g, "motion", c.motion, F::RG32F);
+          res.depth_normal = dn;
+          res.color_history = color;
+          res.moments = mom;
+          res.integrated = g.add_image("integrated", uw, uh, F::RGBA16F);
+          res.counters = counters.import(g);
+          if (adaptive) res.gradient = harness.input(g, "gradient", c.gradient, F::RGBA16F);
+          pass.add(g, res, settings);
+          harness.readback(g, res.integrated, &integrated);
+          harness.readback(g, mom, &moments);
+        }
+        harness.run(g);
+      }
+      const ImageD illumination = quantize(c.illumination, F::RGBA32F), motion = quantize(c.motion, F::RG32F);
+      const ImageD dn = quantize(c.dn, F::RGBA32F), prev_dn = quantize(c.prev_dn, F::RGBA32F);
+      const ImageD prev_color = quantize(c.prev_color, F::RGBA16F), prev_moments = quantize(c.prev_moments, F::RGBA32F);
+      const ImageD gradient = quantize(c.gradient, F::RGBA16F);
+      ref::TemporalInputs in{&illumination, &motion, &dn, &prev_dn, &prev_color, &prev_moments,
+                             adaptive ? &gradient : nullptr};
+      const auto want = ref::temporal(in, {settings.alpha, settings.moments_alpha, settings.history_cap, true});
+      DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 3, fp16_tolerance(4)), "temporal colour");
+      DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 4, fp16_tolerance(20)), "temporal variance");
+      DENOISE_CHECK_CLOSE(compare(moments, want.moments, 3, fp32_tolerance(40)), "temporal moments and length");
+      const auto counts = counters.read();
+      CHECK(counts.nan_samples == want.nan_samples);
+      CHECK(counts.inf_samples == want.inf_samples);
+      CHECK(want.nan_samples + want.inf_samples > 0);
+      // The reference exercises both outcomes of reprojection.
+      int reset = 0, kept = 0;
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) (want.moments.at(x, y, 2) <= 1.0 ? reset : kept)++;
+      CHECK(reset > 0);
+      CHECK(kept > 0);
+    }
+  }
+}
+
+TEST_CASE("pipeline: variance pass matches the CPU reference (temporal and spatial estimates)") {
+  ValidatedDevice device;
+  passes::VariancePass pass(*device);
+  passes::DenoiseSettings settings;
+  for (const auto& size : kSizes) {
+    const int w = size[0], h = size[1];
+    CAPTURE(w);
+    Random r(51u + static_cast<std::uint32_t>(w));
+    const ImageD dn = random_depth_normal(r, w, h);
+    const ImageD integrated = random_color(r, w, h, 0, 4, 2);
+    ImageD moments(w, h, 4);
+    const double lengths[] = {0, 1, 2, 3, 4, 10, 32};
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const double m1 = r.uniform(0, 4);
+        moments.at(x, y, 0) = static_cast<float>(m1);
+        moments.at(x, y, 1) = static_cast<float>(m1 * m1 + r.uniform(0, 2));
+        moments.at(x, y, 2) = lengths[static_cast<int>(r.uniform(0, 7))];
+      }
+    GraphHarness harness(*device);
+    RenderGraph g;
+    const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
+    const auto out = g.add_image("color_variance", uw, uh, F::RGBA16F);
+    pass.add(g, {harness.input(g, "integrated", integrated, F::RGBA16F), harness.input(g, "moments", moments, F::RGBA32F),
+                 harness.input(g, "depth_normal", dn, F::RGBA32F), out},
+             settings);
+    ImageD got;
+    harness.readback(g, out, &got);
+    harness.run(g);
+    const ImageD want = ref::variance(quantize(integrated, F::RGBA16F), quantize(moments, F::RGBA32F),
+                                      quantize(dn, F::RGBA32F),
+                                      {settings.sigma_z, settings.sigma_n, settings.sigma_l, settings.min_history});
+    DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(80)), "variance");
+  }
+}
+
+TEST_CASE("pipeline: atrous pass matches the CPU reference (B3 spline and box, steps 1, 2, 4, history tap)") {
+  ValidatedDevice device;
+  passes::AtrousPass pass(*device);
+  for (const auto kernel : {passes::AtrousKernel::B3Spline, passes::AtrousKernel::Box}) {
+    passes::DenoiseSettings settings;
+    settings.kernel = kernel;
+    for (const auto& size : kSizes) {
+      const int w = size[0], h = size[1];
+      Random r(71u + static_cast<std::uint32_t>(w));
+      const ImageD dn = random_depth_normal(r, w, h);
+      const ImageD color = random_color(r, w, h, 0, 4, 0.5);
+      for (int iteration = 0; iteration < 3; ++iteration) {
+        CAPTURE(static_cast<int>(kernel));
+        CAPTURE(w);
+        CAPTURE(iteration);
+        const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
+        GraphHarness harness(*device);
+        RenderGraph g;
+        const auto out = g.add_image("atrous_out", uw, uh, F::RGBA16F);
+        passes::AtrousPass::Resources res{harness.input(g, "color_in", color, F::RGBA16F),
+                                          harness.input(g, "depth_normal", dn, F::RGBA32F), out, std::nullopt};
+        const bool tap = iteration == 1;
+        if (tap) res.color_history = g.add_image("color_history", uw, uh, F::RGBA16F, Lifetime::Persistent);
+        pass.add(g, res, iteration, settings);
+        ImageD got, history;
+        harness.readback(g, out, &got);
+        if (tap) harness.readback(g, *res.color_history, &history);
+        harness.run(g);
+        const ImageD want = ref::atrous(quantize(color, F::RGBA16F), quantize(dn, F::RGBA32F),
+                                        {1 << iteration, static_cast<int>(kernel), settings.sigma_z, settings.sigma_n,
+                                         settings.sigma_l});
+        DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(4)), "atrous");
+        if (tap) CHECK(history.data == got.data);
+      }
+    }
+  }
+}
+
+TEST_CASE("pipeline: composite pass matches the CPU reference (clamp and ACES tone curves)") {
+  ValidatedDevice device;
+  passes::CompositePass pass(*device);
+  for (const auto tonemap : {passes::Tonemap::Clamp, passes::Tonemap::Aces}) {
+    const int w = 17, h = 13;
+    Random r(91);
+    ImageD illumination = random_color(r, w, h, 0, 3, 0);
+    ImageD albedo = random_color(r, w, h, 0, 1, 1);
+    albedo.at(3, 3, 0) = 0;  // the demodulation guard
+    illumination.at(4, 4, 1) = std::numeric_limits<double>::quiet_NaN();
+    passes::DenoiseSettings settings;
+    settings.tonemap = tonemap;
+    settings.exposure = 1.5f;
+    GraphHarness harness(*device);
+    RenderGraph g;
+    const auto hdr = g.add_image("hdr", w, h, F::RGBA32F);
+    const auto display = g.add_image("display", w, h, F::RGBA8Unorm);
+    pass.add(g, {harness.input(g, "illumination", illumination, F::RGBA32F), harness.input(g, "albedo", albedo, F::RGBA16F),
+                 hdr, display},
+             settings);
+    ImageD got_hdr, got_display;
+    harness.readback(g, hdr, &got_hdr);
+    harness.readback(g, display, &got_display);
+    harness.run(g);
+    const auto want = ref::composite(quantize(illumination, F::RGBA32F), quantize(albedo, F::RGBA16F), settings.exposure,
+                                     static_cast<int>(tonemap));
+    DENOISE_CHECK_CLOSE(compare(got_hdr, want.hdr, 4, fp32_tolerance(3)), "composite hdr");
+    DENOISE_CHECK_CLOSE(compare(got_display, want.display, 4, [](double) { return 1.0 / 255.0; }), "composite display");
+    CHECK(got_hdr.at(4, 4, 1) == 0.0);
+  }
+}
