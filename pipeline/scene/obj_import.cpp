@@ -1,4 +1,5 @@
 // scene/obj_import.cpp: Wavefront OBJ (+ MTL) through tinyobjloader, merged into one mesh.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -58,8 +59,8 @@ ImportedMesh import_obj(const std::filesystem::path& file, const std::string& wh
   tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(file.string(), config)) throw SceneError(prefix + "cannot parse OBJ: " + trim(reader.Error()));
   // A missing MTL file or an out-of-range face index is only a warning for tinyobjloader; here they
-  // would silently drop materials or faces.
-  for (const char* fatal : {"not found", "out of bounds"}) {
+  // would silently drop materials or faces. (A `usemtl` the MTL lacks is common: "default" material.)
+  for (const char* fatal : {"not found in a path", "out of bounds"}) {
     if (reader.Warning().find(fatal) != std::string::npos) throw SceneError(prefix + trim(reader.Warning()));
   }
   check_vertex_numbers(file, prefix);
@@ -127,7 +128,9 @@ ImportedMesh import_obj(const std::filesystem::path& file, const std::string& wh
           mat.albedo = {src.diffuse[0], src.diffuse[1], src.diffuse[2]};
           mat.emission = {src.emission[0], src.emission[1], src.emission[2]};
           if (!src.diffuse_texname.empty()) {
-            out.textures.push_back(load_image(file.parent_path() / src.diffuse_texname, prefix + "material '" + src.name + "'"));
+            std::string texname = src.diffuse_texname;  // exporters on Windows write ".\\tex.jpg"
+            std::replace(texname.begin(), texname.end(), '\\', '/');
+            out.textures.push_back(load_image(file.parent_path() / texname, prefix + "material '" + src.name + "'"));
             mat.albedo_texture = static_cast<int>(out.textures.size() - 1);
           }
         } else {
