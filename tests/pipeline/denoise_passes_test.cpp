@@ -41,7 +41,7 @@ auto fp32_tolerance(double magnitude) {
 
 }  // namespace
 
-TEST_CASE("pipeline: gradient pass matches the CPU reference") {
+TEST_CASE("denoise passes: gradient pass matches the CPU reference") {
   ValidatedDevice device;
   passes::GradientPass pass(*device);
   for (const auto& size : kSizes) {
@@ -76,7 +76,7 @@ TEST_CASE("pipeline: gradient pass matches the CPU reference") {
   }
 }
 
-TEST_CASE("pipeline: gradient_atrous pass matches the CPU reference at steps 1, 2 and 4") {
+TEST_CASE("denoise passes: gradient_atrous pass matches the CPU reference at steps 1, 2 and 4") {
   ValidatedDevice device;
   passes::GradientAtrousPass pass(*device);
   passes::DenoiseSettings settings;
@@ -150,7 +150,7 @@ TemporalCase random_temporal_case(std::uint32_t seed, int w, int h) {
 
 }  // namespace
 
-TEST_CASE("pipeline: temporal pass matches the CPU reference (constant and adaptive alpha, dropped samples counted)") {
+TEST_CASE("denoise passes: temporal pass matches the CPU reference (constant and adaptive alpha, dropped samples counted)") {
   ValidatedDevice device;
   passes::TemporalPass pass(*device);
   for (const bool adaptive : {false, true}) {
@@ -216,7 +216,7 @@ TEST_CASE("pipeline: temporal pass matches the CPU reference (constant and adapt
   }
 }
 
-TEST_CASE("pipeline: variance pass matches the CPU reference (temporal and spatial estimates)") {
+TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and spatial estimates)") {
   ValidatedDevice device;
   passes::VariancePass pass(*device);
   passes::DenoiseSettings settings;
@@ -252,7 +252,7 @@ TEST_CASE("pipeline: variance pass matches the CPU reference (temporal and spati
   }
 }
 
-TEST_CASE("pipeline: atrous pass matches the CPU reference (B3 spline and box, steps 1, 2, 4, history tap)") {
+TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and box, steps 1, 2, 4, history tap)") {
   ValidatedDevice device;
   passes::AtrousPass pass(*device);
   for (const auto kernel : {passes::AtrousKernel::B3Spline, passes::AtrousKernel::Box}) {
@@ -290,7 +290,7 @@ TEST_CASE("pipeline: atrous pass matches the CPU reference (B3 spline and box, s
   }
 }
 
-TEST_CASE("pipeline: composite pass matches the CPU reference (clamp and ACES tone curves)") {
+TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and ACES tone curves)") {
   ValidatedDevice device;
   passes::CompositePass pass(*device);
   for (const auto tonemap : {passes::Tonemap::Clamp, passes::Tonemap::Aces}) {

@@ -92,7 +92,7 @@ FrameInput noisy_frame(Random& r, int w, int h, double mean) {
 
 }  // namespace
 
-TEST_CASE("stability: single-pixel fireflies of 1e6 stay finite, create no energy, and fade") {
+TEST_CASE("denoise stability: single-pixel fireflies of 1e6 stay finite, create no energy, and fade") {
   ValidatedDevice device;
   Runner run(*device, {});
   const int w = 32, h = 32;
@@ -109,7 +109,7 @@ TEST_CASE("stability: single-pixel fireflies of 1e6 stay finite, create no energ
   CHECK(frames > 0);
 }
 
-TEST_CASE("stability: black frames followed by a bright one") {
+TEST_CASE("denoise stability: black frames followed by a bright one") {
   ValidatedDevice device;
   Runner run(*device, {});
   for (int frame = 0; frame < 4; ++frame) {
@@ -123,7 +123,7 @@ TEST_CASE("stability: black frames followed by a bright one") {
   CHECK(frames > 0);
 }
 
-TEST_CASE("stability: NaN and +-Inf samples are dropped and counted, never reach an output or history") {
+TEST_CASE("denoise stability: NaN and +-Inf samples are dropped and counted, never reach an output or history") {
   ValidatedDevice device;
   Runner run(*device, {});
   const int w = 24, h = 24;
@@ -148,7 +148,7 @@ TEST_CASE("stability: NaN and +-Inf samples are dropped and counted, never reach
   CHECK(run.recover(flat_frame(w, h, 0.5), 0.5, 0.01, 20) > 0);
 }
 
-TEST_CASE("stability: a constant image has zero variance and comes out unchanged") {
+TEST_CASE("denoise stability: a constant image has zero variance and comes out unchanged") {
   ValidatedDevice device;
   for (const auto kernel : {passes::AtrousKernel::B3Spline, passes::AtrousKernel::Box}) {
     passes::DenoiseSettings s;
@@ -172,7 +172,7 @@ TEST_CASE("stability: a constant image has zero variance and comes out unchanged
   }
 }
 
-TEST_CASE("stability: a flat wall facing the camera with pixels that hit nothing") {
+TEST_CASE("denoise stability: a flat wall facing the camera with pixels that hit nothing") {
   ValidatedDevice device;
   Runner run(*device, {});
   const int w = 20, h = 16;
@@ -199,7 +199,7 @@ TEST_CASE("stability: a flat wall facing the camera with pixels that hit nothing
   }
 }
 
-TEST_CASE("stability: a camera cut (no valid history anywhere) shows no ghost of the previous shot") {
+TEST_CASE("denoise stability: a camera cut (no valid history anywhere) shows no ghost of the previous shot") {
   ValidatedDevice device;
   for (const bool off_screen : {false, true}) {
     CAPTURE(off_screen);
@@ -218,7 +218,7 @@ TEST_CASE("stability: a camera cut (no valid history anywhere) shows no ghost of
   }
 }
 
-TEST_CASE("stability: alpha = 1 and alpha = 0.01 with the history cap reached") {
+TEST_CASE("denoise stability: alpha = 1 and alpha = 0.01 with the history cap reached") {
   ValidatedDevice device;
   for (const float alpha : {1.0f, 0.01f}) {
     CAPTURE(alpha);
@@ -238,7 +238,7 @@ TEST_CASE("stability: alpha = 1 and alpha = 0.01 with the history cap reached") 
   }
 }
 
-TEST_CASE("stability: values near the fp16 maximum and fp16 denormals") {
+TEST_CASE("denoise stability: values near the fp16 maximum and fp16 denormals") {
   ValidatedDevice device;
   Runner run(*device, {});
   const int w = 16, h = 8;
@@ -261,7 +261,7 @@ TEST_CASE("stability: values near the fp16 maximum and fp16 denormals") {
   CHECK(frames > 0);
 }
 
-TEST_CASE("stability: image sizes 1x1, 3x2, 1000x1 and sizes not multiples of the workgroup") {
+TEST_CASE("denoise stability: image sizes 1x1, 3x2, 1000x1 and sizes not multiples of the workgroup") {
   ValidatedDevice device;
   const int sizes[][2] = {{1, 1}, {3, 2}, {1000, 1}, {1, 37}, {17, 13}};
   for (const auto& size : sizes) {
