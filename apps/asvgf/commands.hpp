@@ -10,5 +10,7 @@ namespace asvgf::cli {
 std::function<int()> add_info_command(CLI::App& app);
 // Registers `graph`.
 std::function<int()> add_graph_command(CLI::App& app);
+// Registers `render`.
+std::function<int()> add_render_command(CLI::App& app);
 
 }  // namespace asvgf::cli

@@ -34,7 +34,7 @@ int run_graph(const GraphOptions& o) {
     std::fprintf(stderr, "asvgf graph: error: --size '%s' is not WIDTHxHEIGHT with both in 1..16384\n", o.size.c_str());
     return 2;
   }
-  settings.atrous_iterations = o.atrous_iterations;
+  settings.denoise.atrous_iterations = o.atrous_iterations;
 
   hal::record::RecordDevice device;
   const scene::Scene scene = scene::builtin_scene(o.scene, o.animation);

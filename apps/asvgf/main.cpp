@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
   std::vector<std::pair<CLI::App*, std::function<int()>>> commands;
   auto info = asvgf::cli::add_info_command(app);
   commands.emplace_back(app.get_subcommand("info"), info);
+  auto render = asvgf::cli::add_render_command(app);
+  commands.emplace_back(app.get_subcommand("render"), render);
   auto graph = asvgf::cli::add_graph_command(app);
   commands.emplace_back(app.get_subcommand("graph"), graph);
 
@@ -33,10 +35,14 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+
   for (auto& [sub, run] : commands) {
     if (!sub->parsed()) continue;
     try {
       return run();
+    } catch (const CLI::ValidationError& e) {
+      std::fprintf(stderr, "asvgf %s: error: %s\n", sub->get_name().c_str(), e.what());
+      return 2;
     } catch (const hal::Error& e) {
       std::fprintf(stderr, "asvgf %s: %s\n", sub->get_name().c_str(), e.what());
       return 1;

@@ -222,7 +222,7 @@ void VulkanCommandList::barrier(std::span<const Barrier> barriers) {
         barrier.srcAccessMask = src.access;
         barrier.dstStageMask = dst.stages;
         barrier.dstAccessMask = dst.access;
-        barrier.oldLayout = src.layout;
+        barrier.oldLayout = b.discard ? VK_IMAGE_LAYOUT_UNDEFINED : src.layout;
         barrier.newLayout = dst.layout;
         barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         barrier.image = object.image;

@@ -4,22 +4,26 @@
 //   raw        gbuffer, pathtrace, composite
 //   ema        + temporal (constant alpha), no spatial filter
 //   svgf       + variance and the a-trous iterations (constant alpha)
-//   asvgf      + gradient_select, gradient, gradient_atrous (adaptive alpha)
+//   asvgf      + gradient_clear, gradient_select, gradient, gradient_atrous (adaptive alpha)
 //   reference  gbuffer, pathtrace at N spp, accumulate, composite
-// gbuffer, gradient_clear, gradient_select, pathtrace and accumulate are the real GPU passes
-// (passes/frame_passes.hpp). The denoiser passes that have not landed yet dispatch a pipeline whose
-// reflection is derived from their declared bindings: enough for the recording HAL to check the
-// ordering of the frame, not enough to render. FrameGraphBuilder::pass_specs() lists those.
+// Passes the frame does not need are left out with a reason (dump() shows them): the gradient
+// passes when nothing moved since the last frame, the debug view when nobody shows it.
 #pragma once
 
-#include <deque>
-#include <map>
+#include <memory>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "graph/render_graph.hpp"
+#include "passes/atrous.hpp"
+#include "passes/composite.hpp"
 #include "passes/compute_pass.hpp"
+#include "passes/denoise_settings.hpp"
+#include "passes/frame_passes.hpp"
+#include "passes/gradient.hpp"
+#include "passes/gradient_atrous.hpp"
+#include "passes/temporal.hpp"
+#include "passes/variance.hpp"
 #include "render/scene_gpu.hpp"
 
 namespace asvgf::frame {
@@ -32,14 +36,12 @@ inline constexpr Method kAllMethods[] = {Method::Raw, Method::Ema, Method::Svgf,
 struct FrameSettings {
   Method method = Method::Asvgf;
   std::uint32_t width = 128, height = 128;
-  int atrous_iterations = 5;    // SVGF paper: 5
-  int gradient_iterations = 3;  // Q2RTX: 3 at 1/3 resolution
-  int history_tap = 0;          // which a-trous iteration's output feeds the colour history
-  bool scene_moved = true;      // false: nothing moved since last frame, the gradient passes are left out
-  bool debug_view = false;      // also produce the intermediate-buffer view (demo)
-  std::uint32_t frame = 0;      // frame index: decorrelates random numbers
-  std::uint32_t seed = 0;       // --seed
-  std::uint32_t spp = 1;        // samples per pixel of the path tracer this frame
+  passes::DenoiseSettings denoise;  // adaptive alpha is on for asvgf, off for the other methods
+  bool scene_moved = true;          // false: nothing moved since last frame, the gradient passes are left out
+  std::optional<passes::DebugView> debug_view;  // also produce this intermediate-buffer view (demo)
+  std::uint32_t frame = 0;          // frame index: decorrelates random numbers
+  std::uint32_t seed = 0;           // --seed
+  std::uint32_t spp = 1;            // samples per pixel of the path tracer this frame
   std::uint32_t max_bounces = 4;
   bool accumulation_valid = false;  // reference: last frame's accumulation continues
 };
@@ -47,47 +49,32 @@ struct FrameSettings {
 // Images the frame writes its results to, owned by the caller and imported into the graph; the
 // frame leaves them in CopySrc for readback.
 struct FrameTargets {
-  hal::ImageHandle hdr;      // RGBA32F linear radiance
+  hal::ImageHandle hdr;  // RGBA32F linear radiance
   hal::State hdr_state = hal::State::Undefined;
   hal::ImageHandle display;  // RGBA8 tonemapped
   hal::State display_state = hal::State::Undefined;
-};
-
-// One binding of a pass: the shader binding name, the graph resource, how it is used.
-struct PassBinding {
-  std::string name;
-  graph::ResourceId resource = 0;
-  graph::Use use = graph::Use::ShaderRead;
-  bool history = false;
-  bool optional = false;
-};
-struct PassSpec {
-  std::string name;
-  std::vector<PassBinding> bindings;
+  hal::ImageHandle debug;  // RGBA8, written when FrameSettings::debug_view is set
+  hal::State debug_state = hal::State::Undefined;
 };
 
 class FrameGraphBuilder {
  public:
   explicit FrameGraphBuilder(hal::Device& device);
-  ~FrameGraphBuilder();
 
   // Declares the frame over the scene's GPU buffers (imported) and the caller's output images.
   graph::RenderGraph build(const FrameSettings& settings, const render::SceneGpu& scene, const FrameTargets& targets);
-  const std::vector<PassSpec>& pass_specs() const { return specs_; }
+  // NaN and Inf samples the temporal pass dropped so far (waits for the device).
+  passes::SanitizeCounters::Counts dropped_samples() { return counters_.read(); }
 
  private:
-  void add(graph::RenderGraph& g, PassSpec spec, std::uint32_t width, std::uint32_t height,
-           std::string skip_reason = {});
-  hal::PipelineHandle pipeline_for(const graph::RenderGraph& g, const PassSpec& spec);
-
-  hal::Device& device_;
-  passes::PipelineCache pipelines_cache_;
-  std::vector<PassSpec> specs_;
-  std::map<std::string, hal::PipelineHandle> pipelines_;
-  // Storage behind the ShaderInfo views handed to the device.
-  std::deque<std::string> names_;
-  std::deque<std::vector<hal::ShaderBinding>> bindings_;
-  std::deque<hal::ShaderInfo> shaders_;
+  passes::PipelineCache pipelines_;
+  passes::TemporalPass temporal_;
+  passes::VariancePass variance_;
+  passes::AtrousPass atrous_;
+  passes::GradientPass gradient_;
+  passes::GradientAtrousPass gradient_atrous_;
+  passes::CompositePass composite_;
+  passes::SanitizeCounters counters_;
 };
 
 }  // namespace asvgf::frame

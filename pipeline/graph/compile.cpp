@@ -227,7 +227,7 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
   auto key = [&](ResourceId r, bool history) -> std::string {
     const Placement& p = out.placement[r];
     switch (p.where) {
-      case Placement::Where::Transient: return "t" + std::to_string(p.slot);
+      case Placement::Where::Transient: return "t" + std::to_string(p.slot);  // shared by its owners
       case Placement::Where::Persistent: return "p" + res[r].name + "#" + std::to_string(history ? 1 - p.slot : p.slot);
       default: return "i" + std::to_string(r);
     }
@@ -241,6 +241,12 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
     if (p.where == Placement::Where::Imported) {
       t.state = res[r].imported_state;
       t.written = true;
+    } else if (p.where == Placement::Where::Transient) {
+      // Whatever the slot's last owner (last frame) left: wait for it before taking the slot over.
+      if (p.slot < slots_.size()) {
+        t.state = slots_[p.slot].state;
+        t.pending_write = slots_[p.slot].pending;
+      }
     } else if (p.where == Placement::Where::Persistent) {
       auto pit = persistent_.find(res[r].name);
       const std::uint32_t v = history ? 1 - p.slot : p.slot;
@@ -272,7 +278,9 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
       }
       const bool hazard = t.pending_write || (m.write && t.pending_read);
       if (t.fresh || t.state != m.needs || hazard) {
-        cp.barriers.push_back({m.resource, m.history, t.fresh ? hal::State::Undefined : t.state, m.needs});
+        // Taking over a slot: from Undefined when nothing used it, else wait for the old owner and
+        // discard its contents.
+        cp.barriers.push_back({m.resource, m.history, t.state, m.needs, t.fresh && t.state != hal::State::Undefined});
         t.state = m.needs;
         t.pending_write = t.pending_read = t.fresh = false;
       }
@@ -292,6 +300,10 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
       t.pending_write = t.pending_read = false;
     }
   }
+  for (const auto& [k, t] : tracks)
+    if (k[0] == 't')
+      out.slot_end.push_back({static_cast<std::uint32_t>(std::stoul(k.substr(1))), t.state,
+                              t.pending_write || t.pending_read});
   for (ResourceId r = 0; r < res.size(); ++r) {
     if (out.placement[r].where != Placement::Where::Persistent) continue;
     for (bool history : {false, true}) {

@@ -49,7 +49,7 @@ std::string CompiledFrame::text() const {
     for (ResourceId r : passes[k].history_clears) s << "       clear history " << res[r].name << " (never written)\n";
     for (const auto& b : passes[k].barriers)
       s << "       barrier " << res[b.resource].name << (b.history ? " (history)" : "") << ": "
-        << hal::to_string(b.before) << " -> " << hal::to_string(b.after) << "\n";
+        << hal::to_string(b.before) << " -> " << hal::to_string(b.after) << (b.discard ? " (discard)" : "") << "\n";
     for (const auto& a : p.accesses) s << "       " << use_name(a) << " " << res[a.resource].name << "\n";
   }
   for (const auto& b : final_barriers)

@@ -51,7 +51,7 @@ void GraphRuntime::ensure_resources(const CompiledFrame& frame) {
     if (p.where == Placement::Where::Transient) {
       Slot& slot = slots_[p.slot];
       if (!slot.handle.id) {
-        slot = {d.kind, d.width, d.height, d.format, d.size, {}};
+        slot = {d.kind, d.width, d.height, d.format, d.size, {}, hal::State::Undefined, false};
         slot.handle = create(device_, "transient." + std::to_string(p.slot) + " (" + d.name + ")", d.kind, d.width,
                              d.height, d.format, d.size);
       }
@@ -111,7 +111,8 @@ void GraphRuntime::execute(const CompiledFrame& frame, hal::CommandList& command
       else commands.clear_buffer(hal::BufferHandle{h.id}, 0);
     }
     std::vector<hal::Barrier> barriers;
-    for (const GraphBarrier& b : cp.barriers) barriers.push_back({physical(frame, b.resource, b.history), b.before, b.after});
+    for (const GraphBarrier& b : cp.barriers)
+      barriers.push_back({physical(frame, b.resource, b.history), b.before, b.after, b.discard});
     if (!barriers.empty()) commands.barrier(barriers);
     commands.begin_timer(timers_, k);
     if (pass.execute) {
@@ -127,6 +128,10 @@ void GraphRuntime::execute(const CompiledFrame& frame, hal::CommandList& command
     for (const GraphBarrier& b : frame.final_barriers)
       barriers.push_back({physical(frame, b.resource, false), b.before, b.after});
     commands.barrier(barriers);
+  }
+  for (const auto& end : frame.slot_end) {
+    slots_.at(end.slot).state = end.state;
+    slots_.at(end.slot).pending = end.pending;
   }
   for (const auto& end : frame.persistent_end) {
     auto& p = persistent_.at(end.name);

@@ -28,6 +28,7 @@ struct GraphBarrier {
   bool history = false;  // the barrier is on last frame's version
   hal::State before = hal::State::Undefined;
   hal::State after = hal::State::Undefined;
+  bool discard = false;  // a transient's slot changes hands: wait for the old owner, keep nothing
   friend bool operator==(const GraphBarrier&, const GraphBarrier&) = default;
 };
 
@@ -68,6 +69,12 @@ struct CompiledFrame {
   };
   std::vector<PersistentEnd> persistent_end;
   std::vector<std::uint32_t> new_slots;  // pool slots this frame adds (indices into the runtime's pool)
+  struct SlotEnd {
+    std::uint32_t slot = 0;
+    hal::State state = hal::State::Undefined;
+    bool pending = false;
+  };
+  std::vector<SlotEnd> slot_end;  // pool slots this frame used, as it leaves them
 
   std::string text() const;  // readable dump: order, barriers, culled passes with reasons, memory
   std::string dot() const;   // Graphviz
@@ -144,6 +151,8 @@ class GraphRuntime {
     hal::Format format = hal::Format::Undefined;
     std::uint64_t size = 0;
     hal::Resource handle;  // created on first execute
+    hal::State state = hal::State::Undefined;  // at the end of the last executed frame
+    bool pending = false;                      // accessed since its last barrier
   };
   struct Persistent {
     ResourceDecl decl;

@@ -70,8 +70,11 @@ ResourceId RenderGraph::add_buffer(std::string name, std::uint64_t size, Lifetim
   return static_cast<ResourceId>(resources_.size() - 1);
 }
 
-ResourceId RenderGraph::import(std::string name, hal::Resource resource, hal::State state) {
+ResourceId RenderGraph::import(std::string name, hal::Resource resource, hal::State state, std::uint32_t width,
+                               std::uint32_t height) {
   ResourceDecl d;
+  d.width = width;
+  d.height = height;
   d.name = std::move(name);
   d.kind = resource.kind;
   d.lifetime = Lifetime::Imported;

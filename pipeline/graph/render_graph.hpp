@@ -91,7 +91,10 @@ class RenderGraph {
   ResourceId add_image(std::string name, std::uint32_t width, std::uint32_t height, hal::Format format,
                        Lifetime lifetime = Lifetime::Transient);
   ResourceId add_buffer(std::string name, std::uint64_t size, Lifetime lifetime = Lifetime::Transient);
-  ResourceId import(std::string name, hal::Resource resource, hal::State state);
+  // An object owned outside the graph, in `state` now. Images give their size so that passes can
+  // size their dispatches from the declaration.
+  ResourceId import(std::string name, hal::Resource resource, hal::State state, std::uint32_t width = 0,
+                    std::uint32_t height = 0);
   PassBuilder add_pass(std::string name);
   // Resources the frame exists to produce; passes that contribute to none of them are culled.
   // With `final_state`, the frame ends with a barrier moving the resource there (e.g. CopySrc for

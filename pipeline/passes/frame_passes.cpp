@@ -2,6 +2,7 @@
 #include "passes/frame_passes.hpp"
 
 #include "shaders/accumulate.hpp"
+#include "shaders/debug_view.hpp"
 #include "shaders/gbuffer.rayquery.hpp"
 #include "shaders/gbuffer.software.hpp"
 #include "shaders/gradient_clear.hpp"
@@ -30,6 +31,10 @@ struct GradientClearParams {
 struct GradientSelectParams {
   render::GpuCamera camera;
   std::uint32_t width, height, strata_width, strata_height, frame, pad0, pad1, pad2;
+};
+struct DebugViewParams {
+  std::uint32_t width, height, mode;
+  float depth_scale;
 };
 struct AccumulateParams {
   std::uint32_t width, height, history_valid, pad;
@@ -138,6 +143,18 @@ void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::
                    {{"illumination", illumination},
                     {"prev_accumulation", accumulation, Use::ShaderRead, true},
                     {"accumulation", accumulation, Use::ShaderWrite}},
+                   to_bytes(params), groups_2d(width, height));
+}
+
+void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const DebugViewInputs& in, DebugView view,
+                    std::uint32_t width, std::uint32_t height) {
+  const DebugViewParams params{width, height, static_cast<std::uint32_t>(view), 0.25f};
+  add_compute_pass(graph, "debug_view", pipelines.get(shaders::debug_view, sizeof(params)),
+                   {{"depth_normal", in.depth_normal},
+                    {"motion", in.motion},
+                    {"albedo", in.albedo},
+                    {"illumination", in.illumination},
+                    {"debug_view", in.target, Use::ShaderWrite}},
                    to_bytes(params), groups_2d(width, height));
 }
 

@@ -56,4 +56,12 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
 void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId illumination,
                     graph::ResourceId accumulation, bool history_valid, std::uint32_t width, std::uint32_t height);
 
+// The demo's view of an intermediate buffer.
+enum class DebugView : std::uint32_t { Normals = 0, Depth = 1, Motion = 2, Albedo = 3, NoisyInput = 4 };
+struct DebugViewInputs {
+  graph::ResourceId depth_normal, motion, albedo, illumination, target;
+};
+void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const DebugViewInputs& inputs, DebugView view,
+                    std::uint32_t width, std::uint32_t height);
+
 }  // namespace asvgf::passes

@@ -27,7 +27,7 @@ Camera prev_cam;
 layout(set = 0, binding = 6, std430) readonly buffer PreviousTriangles { Triangle values[]; } previous_triangles;
 layout(set = 0, binding = 10, rgba32ui) writeonly uniform uimage2D visibility;
 layout(set = 0, binding = 11, rgba32f) writeonly uniform image2D depth_normal;
-layout(set = 0, binding = 12, rg32f) writeonly uniform image2D motion;
+layout(set = 0, binding = 12, rgba32f) writeonly uniform image2D motion;  // rgba: ESSL 310 has no rg formats
 layout(set = 0, binding = 13, rgba16f) writeonly uniform image2D albedo;
 
 // View depth where the ray through `pixel` meets the plane (point, normal); 0 if parallel.

@@ -14,7 +14,7 @@ layout(set = 0, binding = 0, std140) uniform Params {
 
 layout(set = 0, binding = 1, std430) writeonly buffer Claims { uint values[]; } claims;
 layout(set = 0, binding = 2, rgba32ui) writeonly uniform uimage2D gradient_seeds;
-layout(set = 0, binding = 3, rg32f) writeonly uniform image2D gradient_prev;
+layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D gradient_prev;  // rgba: ESSL 310 has no rg formats
 
 void main() {
   ivec2 s = ivec2(gl_GlobalInvocationID.xy);

@@ -30,7 +30,7 @@ layout(set = 0, binding = 12) uniform texture2D prev_illumination;
 layout(set = 0, binding = 13) uniform texture2D depth_normal;
 layout(set = 0, binding = 14, std430) buffer Claims { uint values[]; } claims;
 layout(set = 0, binding = 15, rgba32ui) writeonly uniform uimage2D gradient_seeds;
-layout(set = 0, binding = 16, rg32f) writeonly uniform image2D gradient_prev;
+layout(set = 0, binding = 16, rgba32f) writeonly uniform image2D gradient_prev;  // rgba: ESSL 310 has no rg formats
 
 Camera cam;
 

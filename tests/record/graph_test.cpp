@@ -147,8 +147,8 @@ frame::FrameSettings small_asvgf() {
   frame::FrameSettings s;
   s.width = 12;
   s.height = 9;
-  s.atrous_iterations = 2;
-  s.gradient_iterations = 2;
+  s.denoise.atrous_iterations = 2;
+  s.denoise.gradient_iterations = 2;
   return s;
 }
 
@@ -213,7 +213,7 @@ TEST_CASE("culling: an output nobody reads culls its pass, a still frame culls t
   CHECK(compiled.dot().find("left out") != std::string::npos);
 
   s.scene_moved = true;
-  s.debug_view = true;
+  s.debug_view = passes::DebugView::Motion;
   auto g2 = builder.build(s, scene.gpu, scene.targets(16, 16));
   auto compiled2 = runtime.compile(g2);
   CHECK(compiled2.culled.empty());
@@ -245,12 +245,14 @@ TEST_CASE("on a small known graph the derived barriers are exactly the expected 
   device.submit(*cmd);
   cmd->reset();
   // Next frame: h's other version, written last frame, is the history; nothing is cleared. The
-  // version written now was last frame's history (shader-read) and was never written.
+  // version written now was last frame's history (shader-read) and was never written. The
+  // transients take their slots back from last frame: wait for its reads, discard the contents.
   auto f1 = runtime.compile(g);
+  CHECK(f1.passes[0].barriers == std::vector<GraphBarrier>{{a, false, State::ShaderRead, State::ShaderWrite, true}});
   CHECK(f1.passes[1].history_clears.empty());
   CHECK(f1.passes[1].barriers == std::vector<GraphBarrier>{{a, false, State::ShaderWrite, State::ShaderRead},
                                                            {h, true, State::ShaderWrite, State::ShaderRead},
-                                                           {b, false, State::Undefined, State::ShaderWrite}});
+                                                           {b, false, State::ShaderRead, State::ShaderWrite, true}});
   CHECK(f1.passes[2].barriers == std::vector<GraphBarrier>{{b, false, State::ShaderWrite, State::ShaderRead},
                                                            {h, false, State::ShaderRead, State::ShaderWrite}});
   runtime.execute(f1, *cmd);

@@ -22,8 +22,11 @@ namespace hal {
 
 struct Barrier {
   Resource resource;
-  State before = State::Undefined;
+  State before = State::Undefined;  // Undefined: nothing to wait for, contents discarded
   State after = State::Undefined;
+  // The contents need not be kept (a transient's memory handed to another resource). The barrier
+  // still waits for the earlier uses in `before`; a barrier from Undefined does not.
+  bool discard = false;
 };
 
 struct DispatchDesc {

@@ -84,7 +84,17 @@ void RecordDevice::Impl::apply_barriers(const Command& command) {
              command.name + " moves " + quoted(name) + " from " + std::string(to_string(b.before)) +
                  " but it is in " + std::string(to_string(t.state)) +
                  (t.last_change.empty() ? std::string() : " (set by " + t.last_change + ")"));
-    if (b.before == State::Undefined) t.written = false;
+    // A barrier from Undefined has no source scope: it waits for nothing that came before.
+    if (b.before == State::Undefined && !t.pending_write.empty())
+      report(ReportKind::WriteAfterWrite, name, t.pending_write, command.name,
+             "write-after-write hazard on " + quoted(name) + ": " + command.name +
+                 " discards it from undefined without waiting for " + t.pending_write + ", which wrote it");
+    if (b.before == State::Undefined)
+      for (const auto& reader : t.pending_reads)
+        report(ReportKind::WriteAfterRead, name, reader, command.name,
+               "write-after-read hazard on " + quoted(name) + ": " + command.name +
+                   " discards it from undefined without waiting for " + reader + ", which read it");
+    if (b.before == State::Undefined || b.discard) t.written = false;
     t.state = b.after;
     t.last_change = command.name;
     t.pending_write.clear();

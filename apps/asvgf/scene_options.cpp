@@ -1,0 +1,90 @@
+#include "scene_options.hpp"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "hal_vulkan/vulkan.hpp"
+#include "scene/builtin.hpp"
+#include "scene/scene_file.hpp"
+
+namespace asvgf::cli {
+
+void add_scene_options(CLI::App& cmd, SceneOptions& o) {
+  cmd.add_option("--scene", o.scene, "Built-in scene ('cornell') or a scene file (.json)")->capture_default_str();
+  cmd.add_option("--animation", o.animation, "Animation of the built-in scene")
+      ->check(CLI::IsMember({"static", "light-exit", "orbit", "boxes-move"}))
+      ->capture_default_str();
+  cmd.add_option("--method", o.method, "raw, ema, svgf, asvgf or reference")
+      ->check(CLI::IsMember({"raw", "ema", "svgf", "asvgf", "reference"}))
+      ->capture_default_str();
+  cmd.add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  cmd.add_option("--device", o.device, "Vulkan adapter: index or part of its name (default: $ASVGF_DEVICE, else best)");
+  cmd.add_flag("--software-bvh", o.software_bvh, "Trace with the software BVH even where ray queries exist");
+  cmd.add_flag("--validation", o.validation, "Enable the Vulkan validation layer (synchronization validation on)");
+  cmd.add_option("--seed", o.seed, "Random seed: the same seed gives the same images")->capture_default_str();
+  cmd.add_option("--max-bounces", o.max_bounces, "Path length after the primary hit")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  auto& d = o.denoise;
+  cmd.add_option("--alpha", d.alpha, "Temporal blend factor (SVGF 0.2)")->check(CLI::Range(0.001, 1.0))->capture_default_str();
+  cmd.add_option("--moments-alpha", d.moments_alpha, "Moments blend factor (SVGF 0.2)")
+      ->check(CLI::Range(0.001, 1.0))
+      ->capture_default_str();
+  cmd.add_option("--atrous-iterations", d.atrous_iterations, "A-trous iterations (SVGF 5)")
+      ->check(CLI::Range(0, 16))
+      ->capture_default_str();
+  cmd.add_option("--sigma-z", d.sigma_z, "Depth edge-stopping (SVGF 1)")->capture_default_str();
+  cmd.add_option("--sigma-n", d.sigma_n, "Normal edge-stopping exponent (SVGF 128)")->capture_default_str();
+  cmd.add_option("--sigma-l", d.sigma_l, "Luminance edge-stopping (SVGF 4)")->capture_default_str();
+  cmd.add_option("--kernel", o.kernel, "A-trous kernel: b3spline (5x5, paper) or box (3x3, seed)")
+      ->check(CLI::IsMember({"b3spline", "box"}))
+      ->capture_default_str();
+  cmd.add_option("--gradient-iterations", d.gradient_iterations, "A-trous iterations over the gradient (Q2RTX 3)")
+      ->check(CLI::Range(0, 8))
+      ->capture_default_str();
+  cmd.add_option("--history-cap", d.history_cap, "Maximum history length in frames")
+      ->check(CLI::Range(1.0, 4096.0))
+      ->capture_default_str();
+  cmd.add_option("--history-tap", d.history_tap, "A-trous iteration whose output feeds the colour history")
+      ->check(CLI::Range(0, 15))
+      ->capture_default_str();
+}
+
+void finish_scene_options(SceneOptions& o) {
+  unsigned w = 0, h = 0;
+  char tail = 0;
+  if (std::sscanf(o.size.c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w == 0 || h == 0 || w > 16384 || h > 16384)
+    throw CLI::ValidationError("--size", "'" + o.size + "' is not WIDTHxHEIGHT with both in 1..16384");
+  o.width = w;
+  o.height = h;
+  o.denoise.kernel = o.kernel == "box" ? passes::AtrousKernel::Box : passes::AtrousKernel::B3Spline;
+  if (o.denoise.history_tap >= std::max(1, o.denoise.atrous_iterations) && o.denoise.atrous_iterations > 0)
+    throw CLI::ValidationError("--history-tap", "must be below --atrous-iterations");
+}
+
+scene::Scene load_scene(const SceneOptions& o) {
+  const std::filesystem::path path(o.scene);
+  if (path.extension() == ".json") return scene::load_scene_file(path);
+  return scene::builtin_scene(o.scene, o.animation);
+}
+
+render::RenderSettings render_settings(const SceneOptions& o) {
+  render::RenderSettings s;
+  s.method = *frame::method_from_string(o.method);
+  s.width = o.width;
+  s.height = o.height;
+  s.max_bounces = o.max_bounces;
+  s.seed = o.seed;
+  s.denoise = o.denoise;
+  if (o.software_bvh) s.ray_query = false;
+  return s;
+}
+
+std::unique_ptr<hal::Device> open_device(const SceneOptions& o) {
+  hal::vulkan::DeviceOptions options;
+  options.adapter = o.device;
+  options.validation = o.validation;
+  return hal::vulkan::create_device(options);
+}
+
+}  // namespace asvgf::cli

@@ -1,0 +1,38 @@
+// Options shared by the commands that render: which scene, which device, how to render.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <string>
+
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+
+namespace asvgf::cli {
+
+struct SceneOptions {
+  std::string scene = "cornell";  // a built-in name or a scene file (.json)
+  std::string animation = "light-exit";
+  std::string method = "asvgf";
+  std::string size = "128x128";
+  std::uint32_t width = 128, height = 128;
+  std::string device;  // index or name part; empty: ASVGF_DEVICE, then the best device
+  bool software_bvh = false;
+  bool validation = false;
+  std::uint32_t seed = 0;
+  std::uint32_t max_bounces = 4;
+  passes::DenoiseSettings denoise;
+  std::string kernel = "b3spline";
+};
+
+// Registers --scene --animation --method --size --device --software-bvh --validation --seed
+// --max-bounces and the denoiser parameters on `cmd`.
+void add_scene_options(CLI::App& cmd, SceneOptions& options);
+// Checks what CLI11 cannot (size syntax); throws CLI::ValidationError naming the option.
+void finish_scene_options(SceneOptions& options);
+// The scene the options name: built-in, or loaded from the file.
+scene::Scene load_scene(const SceneOptions& options);
+render::RenderSettings render_settings(const SceneOptions& options);
+std::unique_ptr<hal::Device> open_device(const SceneOptions& options);
+
+}  // namespace asvgf::cli

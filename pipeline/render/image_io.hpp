@@ -1,0 +1,25 @@
+// render/image_io.hpp: writing frames: PNG (8-bit sRGB) and OpenEXR (linear float). Files appear
+// whole or not at all: each is written to a temporary name and renamed.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <stdexcept>
+
+namespace asvgf::render {
+
+class ImageIoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// rgba: width*height*4 bytes, rows top to bottom.
+void write_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+               std::span<const std::uint8_t> rgba);
+// rgba: width*height*4 floats; written as half floats (RGB; A dropped). Throws ImageIoError when a
+// value is NaN or infinite, naming the file and the first bad pixel.
+void write_exr(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+               std::span<const float> rgba);
+
+}  // namespace asvgf::render

@@ -1,0 +1,115 @@
+// Rendering frame after frame: scene update, graph build and compile, execute, readback.
+#include "render/renderer.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "hal/error.hpp"
+
+namespace asvgf::render {
+namespace {
+
+// Reference frames are traced in equal batches so that no single dispatch runs for long (GPU
+// watchdogs) and each batch weighs the same in the running mean.
+constexpr std::uint32_t kMaxBatchSpp = 64;
+
+bool pick_ray_query(const hal::Device& device, const RenderSettings& s) {
+  return s.ray_query.value_or(device.capabilities().ray_query);
+}
+
+}  // namespace
+
+Renderer::Renderer(hal::Device& device, const scene::Scene& scene, const RenderSettings& settings)
+    : device_(device),
+      settings_(settings),
+      scene_gpu_(device, scene, pick_ray_query(device, settings)),
+      runtime_(device),
+      builder_(device),
+      commands_(device.create_command_list("frame")) {
+  const auto max = device.capabilities().max_image_dimension;
+  if (settings.width == 0 || settings.height == 0 || settings.width > max || settings.height > max)
+    throw hal::Error(hal::ErrorKind::InvalidDescriptor, "render size",
+                     std::to_string(settings.width) + "x" + std::to_string(settings.height) + " is outside 1.." +
+                         std::to_string(max));
+  if (settings.spp == 0) throw hal::Error(hal::ErrorKind::InvalidDescriptor, "spp", "samples per pixel must be >= 1");
+  if (settings.method == frame::Method::Reference) {
+    batches_ = (settings.spp + kMaxBatchSpp - 1) / kMaxBatchSpp;
+    batch_spp_ = (settings.spp + batches_ - 1) / batches_;
+  } else {
+    batch_spp_ = settings.spp;
+  }
+  const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
+  targets_.hdr = device.create_image({"hdr", settings.width, settings.height, hal::Format::RGBA32F, usage});
+  targets_.display = device.create_image({"display", settings.width, settings.height, hal::Format::RGBA8Unorm, usage});
+  if (settings.debug_view)
+    targets_.debug = device.create_image({"debug_view", settings.width, settings.height, hal::Format::RGBA8Unorm, usage});
+}
+
+Renderer::~Renderer() {
+  try {
+    device_.wait();
+    commands_.reset();
+    device_.destroy(targets_.hdr);
+    device_.destroy(targets_.display);
+    if (targets_.debug) device_.destroy(targets_.debug);
+  } catch (...) {
+    // Nothing to release on a lost device.
+  }
+}
+
+FrameImages Renderer::render(int frame) {
+  if (frame <= last_frame_) runtime_.reset_histories();  // a jump back: nothing from before is valid
+  const bool moved = scene_gpu_.update(static_cast<float>(frame));
+  const bool first = last_frame_ < 0 || frame <= last_frame_;
+  last_frame_ = frame;
+
+  std::map<std::string, double> totals;
+  std::vector<std::string> order;
+  bool have_times = true;
+  const std::uint32_t batches = settings_.method == frame::Method::Reference ? batches_ : 1;
+  for (std::uint32_t b = 0; b < batches; ++b) {
+    frame::FrameSettings s;
+    s.method = settings_.method;
+    s.width = settings_.width;
+    s.height = settings_.height;
+    s.denoise = settings_.denoise;
+    s.scene_moved = moved && !first;
+    s.debug_view = settings_.debug_view;
+    s.frame = static_cast<std::uint32_t>(frame) * 4096u + b;
+    s.seed = settings_.seed;
+    s.spp = batch_spp_;
+    s.max_bounces = settings_.max_bounces;
+    s.accumulation_valid = b > 0;
+    last_graph_.emplace(builder_.build(s, scene_gpu_, targets_));
+    last_compiled_.emplace(runtime_.compile(*last_graph_));
+    commands_->reset();
+    runtime_.execute(*last_compiled_, *commands_);
+    device_.submit(*commands_);
+    device_.wait();
+    targets_.hdr_state = targets_.display_state = hal::State::CopySrc;
+    if (settings_.debug_view) targets_.debug_state = hal::State::CopySrc;
+    for (const auto& t : runtime_.timings()) {
+      if (!totals.count(t.pass)) order.push_back(t.pass);
+      totals[t.pass] += t.gpu_ms.value_or(0.0);
+      have_times = have_times && t.gpu_ms.has_value();
+    }
+  }
+  timings_.clear();
+  for (const auto& name : order)
+    timings_.push_back({name, have_times ? std::optional<double>(totals[name]) : std::nullopt});
+
+  FrameImages out;
+  out.width = settings_.width;
+  out.height = settings_.height;
+  out.hdr.resize(std::size_t(out.width) * out.height * 4);
+  out.display.resize(std::size_t(out.width) * out.height * 4);
+  device_.read_image(targets_.hdr, std::as_writable_bytes(std::span(out.hdr)));
+  device_.read_image(targets_.display, std::as_writable_bytes(std::span(out.display)));
+  if (settings_.debug_view) {
+    out.debug.resize(out.display.size());
+    device_.read_image(targets_.debug, std::as_writable_bytes(std::span(out.debug)));
+  }
+  return out;
+}
+
+}  // namespace asvgf::render

@@ -1,0 +1,67 @@
+// render/renderer.hpp: renders a scene's animation frame by frame with one method, on any HAL
+// device, and hands back each frame's HDR and display images and its per-pass GPU times.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "frame/frame_graph.hpp"
+#include "graph/graph_runtime.hpp"
+#include "render/scene_gpu.hpp"
+#include "scene/scene.hpp"
+
+namespace asvgf::render {
+
+struct RenderSettings {
+  frame::Method method = frame::Method::Asvgf;
+  std::uint32_t width = 128, height = 128;
+  std::uint32_t spp = 1;  // samples per pixel per frame (the reference method's N)
+  std::uint32_t max_bounces = 4;
+  std::uint32_t seed = 0;
+  passes::DenoiseSettings denoise;
+  // Tracing variant: empty picks ray queries when the device has them, else the software BVH.
+  std::optional<bool> ray_query;
+  std::optional<passes::DebugView> debug_view;
+};
+
+struct FrameImages {
+  std::uint32_t width = 0, height = 0;
+  std::vector<float> hdr;             // RGBA, linear radiance
+  std::vector<std::uint8_t> display;  // RGBA8, tonemapped sRGB
+  std::vector<std::uint8_t> debug;    // RGBA8 when a debug view was asked for
+};
+
+class Renderer {
+ public:
+  Renderer(hal::Device& device, const scene::Scene& scene, const RenderSettings& settings);
+  ~Renderer();
+
+  // Renders animation frame `frame` (frames must come in increasing order for histories to mean
+  // anything; a jump back is treated as a camera cut).
+  FrameImages render(int frame);
+  // GPU milliseconds per pass of the last frame (all batches of a reference frame summed).
+  const std::vector<graph::PassTiming>& timings() const { return timings_; }
+  const graph::CompiledFrame& last_frame() const { return *last_compiled_; }
+  passes::SanitizeCounters::Counts dropped_samples() { return builder_.dropped_samples(); }
+  const RenderSettings& settings() const { return settings_; }
+  bool ray_query() const { return scene_gpu_.ray_query(); }
+  // Samples per pixel actually traced per frame (the reference rounds up to equal batches).
+  std::uint32_t spp_per_frame() const { return batches_ * batch_spp_; }
+
+ private:
+  hal::Device& device_;
+  RenderSettings settings_;
+  SceneGpu scene_gpu_;
+  graph::GraphRuntime runtime_;
+  frame::FrameGraphBuilder builder_;
+  std::unique_ptr<hal::CommandList> commands_;
+  frame::FrameTargets targets_;
+  std::optional<graph::RenderGraph> last_graph_;
+  std::optional<graph::CompiledFrame> last_compiled_;
+  std::vector<graph::PassTiming> timings_;
+  std::uint32_t batches_ = 1, batch_spp_ = 1;
+  int last_frame_ = -1;
+};
+
+}  // namespace asvgf::render
