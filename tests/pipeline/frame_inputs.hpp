@@ -1,0 +1,76 @@
+// Test helper: runs the visibility and path-tracing passes of one frame on a device and reads back
+// every image they write, for checks against analytic results.
+#pragma once
+
+#include <cstring>
+#include <vector>
+
+#include "graph/graph_runtime.hpp"
+#include "passes/frame_passes.hpp"
+#include "render/scene_gpu.hpp"
+#include "scene/scene.hpp"
+
+struct FrameInputs {
+  std::uint32_t width = 0, height = 0;
+  std::vector<std::uint32_t> visibility;  // 4 per pixel
+  std::vector<float> depth_normal, motion, illumination;  // 4 per pixel
+  std::vector<std::uint16_t> albedo;                     // 4 fp16 per pixel
+};
+
+// Renders frames 0..`frame` of `scene` (so that "previous" is frame-1) and returns frame `frame`'s
+// inputs. `spp` samples per pixel, `max_bounces`, `seed` as in the path tracer.
+inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::Scene& scene, bool ray_query,
+                                       std::uint32_t width, std::uint32_t height, int frame, std::uint32_t spp = 1,
+                                       std::uint32_t max_bounces = 4, std::uint32_t seed = 7) {
+  using namespace asvgf;
+  render::SceneGpu gpu(device, scene, ray_query);
+  graph::GraphRuntime runtime(device);
+  passes::PipelineCache pipelines(device);
+  const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
+  struct Target {
+    const char* name;
+    hal::Format format;
+    hal::ImageHandle image;
+  };
+  Target targets[] = {{"visibility", hal::Format::RGBA32Uint, {}},
+                      {"depth_normal", hal::Format::RGBA32F, {}},
+                      {"motion", hal::Format::RGBA32F, {}},
+                      {"albedo", hal::Format::RGBA16F, {}},
+                      {"illumination", hal::Format::RGBA32F, {}}};
+  for (auto& t : targets) t.image = device.create_image({t.name, width, height, t.format, usage});
+  auto commands = device.create_command_list("frame inputs");
+  for (int f = 0; f <= frame; ++f) {
+    gpu.update(static_cast<float>(f));
+    if (f < frame) continue;  // only the last frame is rendered; earlier updates set "previous"
+    graph::RenderGraph g;
+    const auto scene_in = passes::import_scene(g, gpu, width, height);
+    graph::ResourceId ids[5];
+    for (int i = 0; i < 5; ++i) ids[i] = g.import(targets[i].name, targets[i].image, hal::State::Undefined, width, height);
+    const auto seeds = g.add_image("rng_seed", width, height, hal::Format::R32Uint);
+    passes::add_gbuffer(g, pipelines, scene_in, {ids[0], ids[1], ids[2], ids[3]}, width, height);
+    passes::add_pathtrace(g, pipelines, scene_in, ids[0], std::nullopt, ids[4], seeds,
+                          {static_cast<std::uint32_t>(frame), seed, max_bounces, spp}, width, height);
+    for (auto id : ids) g.output(id, hal::State::CopySrc);
+    auto compiled = runtime.compile(g);
+    runtime.execute(compiled, *commands);
+    device.submit(*commands);
+    device.wait();
+  }
+  FrameInputs out;
+  out.width = width;
+  out.height = height;
+  const std::size_t n = std::size_t(width) * height * 4;
+  out.visibility.resize(n);
+  out.depth_normal.resize(n);
+  out.motion.resize(n);
+  out.albedo.resize(n);
+  out.illumination.resize(n);
+  device.read_image(targets[0].image, std::as_writable_bytes(std::span(out.visibility)));
+  device.read_image(targets[1].image, std::as_writable_bytes(std::span(out.depth_normal)));
+  device.read_image(targets[2].image, std::as_writable_bytes(std::span(out.motion)));
+  device.read_image(targets[3].image, std::as_writable_bytes(std::span(out.albedo)));
+  device.read_image(targets[4].image, std::as_writable_bytes(std::span(out.illumination)));
+  commands.reset();
+  for (auto& t : targets) device.destroy(t.image);
+  return out;
+}
