@@ -12,5 +12,9 @@ std::function<int()> add_info_command(CLI::App& app);
 std::function<int()> add_graph_command(CLI::App& app);
 // Registers `render`.
 std::function<int()> add_render_command(CLI::App& app);
+// Registers `report`.
+std::function<int()> add_report_command(CLI::App& app);
+// Registers `bench`.
+std::function<int()> add_bench_command(CLI::App& app);
 
 }  // namespace asvgf::cli

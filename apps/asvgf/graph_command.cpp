@@ -1,6 +1,7 @@
 // `asvgf graph`: prints the compiled render graph of one frame (passes in order, barriers, passes
 // left out and why, resource placement and memory), optionally as Graphviz. Runs on the
 // recording HAL, so it needs no GPU; earlier frames are executed too, so histories exist.
+#include <array>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -43,13 +44,20 @@ int run_graph(const GraphOptions& o) {
   frame::FrameTargets targets{
       device.create_image({"hdr", settings.width, settings.height, hal::Format::RGBA32F, usage}), hal::State::Undefined,
       device.create_image({"display", settings.width, settings.height, hal::Format::RGBA8Unorm, usage}),
+      hal::State::Undefined,
+      {},
+      hal::State::Undefined,
+      device.create_buffer({"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst}),
       hal::State::Undefined};
+  const std::array<std::byte, 16> zeros{};
   graph::GraphRuntime runtime(device);
   frame::FrameGraphBuilder builder(device);
   auto commands = device.create_command_list("frames");
   for (int f = 0;; ++f) {
     settings.scene_moved = scene_gpu.update(static_cast<float>(f)) && f > 0;
     settings.frame = static_cast<std::uint32_t>(f);
+    device.upload_buffer(targets.ray_counter, 0, zeros);  // the path tracer counts into it
+    targets.ray_counter_state = hal::State::CopyDst;
     auto g = builder.build(settings, scene_gpu, targets);
     auto compiled = runtime.compile(g);
     if (f == o.frame) {

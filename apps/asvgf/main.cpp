@@ -19,8 +19,12 @@ int main(int argc, char** argv) {
   commands.emplace_back(app.get_subcommand("info"), info);
   auto render = asvgf::cli::add_render_command(app);
   commands.emplace_back(app.get_subcommand("render"), render);
+  auto bench = asvgf::cli::add_bench_command(app);
+  commands.emplace_back(app.get_subcommand("bench"), bench);
   auto graph = asvgf::cli::add_graph_command(app);
   commands.emplace_back(app.get_subcommand("graph"), graph);
+  auto report = asvgf::cli::add_report_command(app);
+  commands.emplace_back(app.get_subcommand("report"), report);
 
   try {
     app.parse(argc, argv);

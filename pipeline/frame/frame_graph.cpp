@@ -45,6 +45,8 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const passes::SceneInputs scene = passes::import_scene(g, scene_gpu, w, h);
   const ResourceId hdr = g.import("hdr", targets.hdr, targets.hdr_state, w, h);
   const ResourceId display = g.import("display", targets.display, targets.display_state, w, h);
+  const ResourceId rays = g.import("ray_counter", targets.ray_counter, targets.ray_counter_state);
+  g.output(rays, hal::State::CopySrc);
   // Persistent: read next frame as histories.
   const ResourceId vbuffer = g.add_image("visibility", w, h, F::RGBA32Uint, Lifetime::Persistent);
   const ResourceId depth_normal = g.add_image("depth_normal", w, h, F::RGBA32F, Lifetime::Persistent);
@@ -71,7 +73,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
                                 s.frame, w, h, gradients ? "" : not_moved);
   }
   passes::add_pathtrace(g, pipelines_, scene, vbuffer, gradients ? gradient_seeds : std::nullopt, illumination, seeds,
-                        {s.frame, s.seed, s.max_bounces, s.spp}, w, h);
+                        rays, {s.frame, s.seed, s.max_bounces, s.spp}, w, h);
   if (adaptive) {
     // Declared on still frames too, so that dump() shows them left out with the reason.
     auto skip_if_still = [&] {

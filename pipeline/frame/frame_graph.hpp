@@ -55,6 +55,8 @@ struct FrameTargets {
   hal::State display_state = hal::State::Undefined;
   hal::ImageHandle debug;  // RGBA8, written when FrameSettings::debug_view is set
   hal::State debug_state = hal::State::Undefined;
+  hal::BufferHandle ray_counter;  // >= 4 bytes, zeroed by the caller: the path tracer adds its rays
+  hal::State ray_counter_state = hal::State::Undefined;
 };
 
 class FrameGraphBuilder {

@@ -95,7 +95,8 @@ void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const Scen
 
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
                    graph::ResourceId visibility, std::optional<graph::ResourceId> gradient_seeds,
-                   graph::ResourceId illumination, graph::ResourceId rng_seed, const PathtraceSettings& s,
+                   graph::ResourceId illumination, graph::ResourceId rng_seed, graph::ResourceId ray_counter,
+                   const PathtraceSettings& s,
                    std::uint32_t width, std::uint32_t height, const std::string& name) {
   const hal::ShaderInfo& shader =
       scene.ray_query ? (gradient_seeds ? shaders::pathtrace_rayquery_gradients : shaders::pathtrace_rayquery)
@@ -105,7 +106,8 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
   auto bindings = scene_bindings(scene, shader);
   bindings.insert(bindings.end(), {{"visibility", visibility},
                                    {"illumination", illumination, Use::ShaderWrite},
-                                   {"rng_seed", rng_seed, Use::ShaderWrite}});
+                                   {"rng_seed", rng_seed, Use::ShaderWrite},
+                                   {"ray_counter", ray_counter, Use::ShaderReadWrite}});
   if (gradient_seeds) bindings.push_back({"gradient_seeds", *gradient_seeds});
   add_compute_pass(graph, name, pipelines.get(shader, sizeof(params)), std::move(bindings), to_bytes(params),
                    groups_2d(width, height));

@@ -34,9 +34,12 @@ struct PathtraceSettings {
   std::uint32_t spp = 1;          // samples per pixel in this dispatch
 };
 // `gradient_seeds` present: the A-SVGF variant that starts carried pixels from last frame's point.
+// `ray_counter`: a buffer whose first uint the pass adds the rays it traced to (closest-hit and
+// shadow rays after the primary hit; the primary ray is the gbuffer's).
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
                    graph::ResourceId visibility, std::optional<graph::ResourceId> gradient_seeds,
-                   graph::ResourceId illumination, graph::ResourceId rng_seed, const PathtraceSettings& settings,
+                   graph::ResourceId illumination, graph::ResourceId rng_seed, graph::ResourceId ray_counter,
+                   const PathtraceSettings& settings,
                    std::uint32_t width, std::uint32_t height, const std::string& name = "pathtrace");
 
 struct GradientSelectTargets {

@@ -2,6 +2,7 @@
 #include "render/renderer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 #include "hal/error.hpp"
@@ -32,17 +33,39 @@ Renderer::Renderer(hal::Device& device, const scene::Scene& scene, const RenderS
                      std::to_string(settings.width) + "x" + std::to_string(settings.height) + " is outside 1.." +
                          std::to_string(max));
   if (settings.spp == 0) throw hal::Error(hal::ErrorKind::InvalidDescriptor, "spp", "samples per pixel must be >= 1");
-  if (settings.method == frame::Method::Reference) {
-    batches_ = (settings.spp + kMaxBatchSpp - 1) / kMaxBatchSpp;
-    batch_spp_ = (settings.spp + batches_ - 1) / batches_;
-  } else {
-    batch_spp_ = settings.spp;
-  }
+  set_batches();
   const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
   targets_.hdr = device.create_image({"hdr", settings.width, settings.height, hal::Format::RGBA32F, usage});
   targets_.display = device.create_image({"display", settings.width, settings.height, hal::Format::RGBA8Unorm, usage});
+  targets_.ray_counter = device.create_buffer(
+      {"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopySrc | hal::BufferUsage::CopyDst});
   if (settings.debug_view)
     targets_.debug = device.create_image({"debug_view", settings.width, settings.height, hal::Format::RGBA8Unorm, usage});
+}
+
+void Renderer::set_batches() {
+  batches_ = 1;
+  batch_spp_ = settings_.spp;
+  if (settings_.method == frame::Method::Reference) {
+    batches_ = (settings_.spp + kMaxBatchSpp - 1) / kMaxBatchSpp;
+    batch_spp_ = (settings_.spp + batches_ - 1) / batches_;
+  }
+}
+
+void Renderer::set_settings(const RenderSettings& s) {
+  if (s.width != settings_.width || s.height != settings_.height || s.seed != settings_.seed ||
+      s.ray_query != settings_.ray_query)
+    throw hal::Error(hal::ErrorKind::InvalidUsage, "renderer", "size, seed and tracing variant are fixed at creation");
+  if (s.spp == 0) throw hal::Error(hal::ErrorKind::InvalidDescriptor, "spp", "samples per pixel must be >= 1");
+  // Another method's histories hold another quantity, or nothing recent: start afresh.
+  if (s.method != settings_.method) runtime_.reset_histories();
+  if (s.debug_view && !targets_.debug) {
+    const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
+    targets_.debug = device_.create_image({"debug_view", s.width, s.height, hal::Format::RGBA8Unorm, usage});
+    targets_.debug_state = hal::State::Undefined;
+  }
+  settings_ = s;
+  set_batches();
 }
 
 Renderer::~Renderer() {
@@ -51,6 +74,7 @@ Renderer::~Renderer() {
     commands_.reset();
     device_.destroy(targets_.hdr);
     device_.destroy(targets_.display);
+    device_.destroy(targets_.ray_counter);
     if (targets_.debug) device_.destroy(targets_.debug);
   } catch (...) {
     // Nothing to release on a lost device.
@@ -62,11 +86,17 @@ FrameImages Renderer::render(int frame) {
   const bool moved = scene_gpu_.update(static_cast<float>(frame));
   const bool first = last_frame_ < 0 || frame <= last_frame_;
   last_frame_ = frame;
+  // A progressive reference continues last frame's mean while nothing moved (after a method change
+  // the runtime's reset histories make the accumulation read as unwritten zeros: a fresh start).
+  const bool continue_mean = settings_.progressive && !moved && !first;
 
   std::map<std::string, double> totals;
   std::vector<std::string> order;
   bool have_times = true;
   const std::uint32_t batches = settings_.method == frame::Method::Reference ? batches_ : 1;
+  const std::array<std::uint32_t, 4> zero{};
+  device_.upload_buffer(targets_.ray_counter, 0, std::as_bytes(std::span(zero)));
+  targets_.ray_counter_state = hal::State::CopyDst;
   for (std::uint32_t b = 0; b < batches; ++b) {
     frame::FrameSettings s;
     s.method = settings_.method;
@@ -79,14 +109,14 @@ FrameImages Renderer::render(int frame) {
     s.seed = settings_.seed;
     s.spp = batch_spp_;
     s.max_bounces = settings_.max_bounces;
-    s.accumulation_valid = b > 0;
+    s.accumulation_valid = b > 0 || continue_mean;
     last_graph_.emplace(builder_.build(s, scene_gpu_, targets_));
     last_compiled_.emplace(runtime_.compile(*last_graph_));
     commands_->reset();
     runtime_.execute(*last_compiled_, *commands_);
     device_.submit(*commands_);
     device_.wait();
-    targets_.hdr_state = targets_.display_state = hal::State::CopySrc;
+    targets_.hdr_state = targets_.display_state = targets_.ray_counter_state = hal::State::CopySrc;
     if (settings_.debug_view) targets_.debug_state = hal::State::CopySrc;
     for (const auto& t : runtime_.timings()) {
       if (!totals.count(t.pass)) order.push_back(t.pass);
@@ -98,9 +128,14 @@ FrameImages Renderer::render(int frame) {
   for (const auto& name : order)
     timings_.push_back({name, have_times ? std::optional<double>(totals[name]) : std::nullopt});
 
+  std::uint32_t rays = 0;
+  device_.read_buffer(targets_.ray_counter, 0, std::as_writable_bytes(std::span(&rays, 1)));
+  rays_last_frame_ = rays + std::uint64_t(settings_.width) * settings_.height * batches;
+
   FrameImages out;
   out.width = settings_.width;
   out.height = settings_.height;
+  if (!settings_.read_back) return out;
   out.hdr.resize(std::size_t(out.width) * out.height * 4);
   out.display.resize(std::size_t(out.width) * out.height * 4);
   device_.read_image(targets_.hdr, std::as_writable_bytes(std::span(out.hdr)));

@@ -23,6 +23,11 @@ struct RenderSettings {
   // Tracing variant: empty picks ray queries when the device has them, else the software BVH.
   std::optional<bool> ray_query;
   std::optional<passes::DebugView> debug_view;
+  // Reference method: keep accumulating over frames while nothing moved (the demo's progressive
+  // reference); false: every frame is its own estimate of `spp` samples.
+  bool progressive = false;
+  // False: render() returns only the size; the images stay on the GPU (display_image(), the demo).
+  bool read_back = true;
 };
 
 struct FrameImages {
@@ -45,7 +50,18 @@ class Renderer {
   const graph::CompiledFrame& last_frame() const { return *last_compiled_; }
   passes::SanitizeCounters::Counts dropped_samples() { return builder_.dropped_samples(); }
   const RenderSettings& settings() const { return settings_; }
+  // Live changes between frames (the demo's keys): method, spp, max_bounces, denoiser settings,
+  // debug view, progressive, read_back. Size, seed and tracing variant must stay (InvalidUsage).
+  // A new method restarts the histories.
+  void set_settings(const RenderSettings& settings);
+  // The frame's output images, in State::CopySrc after render() (the caller may use them in
+  // between, e.g. present them, as long as it returns them to CopySrc before the next render()).
+  hal::ImageHandle display_image() const { return targets_.display; }
+  hal::ImageHandle hdr_image() const { return targets_.hdr; }
+  hal::ImageHandle debug_image() const { return targets_.debug; }  // empty before a debug view was asked for
   bool ray_query() const { return scene_gpu_.ray_query(); }
+  // Rays traced in the last frame: one primary ray per pixel (gbuffer) plus the path tracer's.
+  std::uint64_t rays_last_frame() const { return rays_last_frame_; }
   // Samples per pixel actually traced per frame (the reference rounds up to equal batches).
   std::uint32_t spp_per_frame() const { return batches_ * batch_spp_; }
 
@@ -62,6 +78,8 @@ class Renderer {
   std::vector<graph::PassTiming> timings_;
   std::uint32_t batches_ = 1, batch_spp_ = 1;
   int last_frame_ = -1;
+  void set_batches();
+  std::uint64_t rays_last_frame_ = 0;
 };
 
 }  // namespace asvgf::render

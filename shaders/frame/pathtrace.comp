@@ -36,6 +36,10 @@ layout(set = 0, binding = 12, r32ui) writeonly uniform uimage2D rng_seed;
 #ifdef GRADIENT_SAMPLES
 layout(set = 0, binding = 13) uniform utexture2D gradient_seeds;
 #endif
+// Rays traced this frame (closest and shadow), for the rays-per-second benchmark.
+layout(set = 0, binding = 14, std430) buffer RayCounter { uint count; } ray_counter;
+
+uint rays_traced = 0u;
 
 Camera cam;
 const float kAlbedoGuard = 1e-3;
@@ -95,6 +99,7 @@ vec3 sample_light(vec3 x, vec3 n, uint self, inout uint state) {
   float cos_x = dot(n, dir);
   if (cos_x <= 0.0) return vec3(0.0);
   float eps = ray_offset(x);
+  rays_traced += 1u;
   if (trace_any(x + n * eps, dir, 0.0, dist - eps)) return vec3(0.0);
   float pdf_bsdf = cos_x / kPi;
   float w = power_heuristic(pdf_light, pdf_bsdf);
@@ -128,6 +133,7 @@ vec3 trace_path(vec3 x, vec3 n, uint tri, vec3 albedo, vec3 emission, inout uint
     float pdf_bsdf = max(dot(n, dir), 0.0) / kPi;
     throughput *= albedo;
     vec3 o = x + n * ray_offset(x);
+    rays_traced += 1u;
     Hit h = trace_closest(o, dir, 0.0, 1e30);
     float t_sphere;
     int sphere = hit_sphere_lights(o, dir, 0.0, h.hit ? h.t : 1e30, params.sphere_count, t_sphere);
@@ -196,4 +202,5 @@ void main() {
   }
   imageStore(illumination, p, vec4(radiance / max(albedo, vec3(kAlbedoGuard)), 0.0));
   imageStore(rng_seed, p, uvec4(seed));
+  if (rays_traced > 0u) atomicAdd(ray_counter.count, rays_traced);
 }

@@ -38,6 +38,9 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
                       {"albedo", hal::Format::RGBA16F, {}},
                       {"illumination", hal::Format::RGBA32F, {}}};
   for (auto& t : targets) t.image = device.create_image({t.name, width, height, t.format, usage});
+  const auto ray_counter = device.create_buffer({"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst});
+  const std::uint32_t zeros[4] = {};
+  device.upload_buffer(ray_counter, 0, std::as_bytes(std::span(zeros)));
   auto commands = device.create_command_list("frame inputs");
   for (int f = 0; f <= frame; ++f) {
     gpu.update(static_cast<float>(f));
@@ -47,8 +50,9 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
     graph::ResourceId ids[5];
     for (int i = 0; i < 5; ++i) ids[i] = g.import(targets[i].name, targets[i].image, hal::State::Undefined, width, height);
     const auto seeds = g.add_image("rng_seed", width, height, hal::Format::R32Uint);
+    const auto rays = g.import("ray_counter", ray_counter, hal::State::CopyDst);
     passes::add_gbuffer(g, pipelines, scene_in, {ids[0], ids[1], ids[2], ids[3]}, width, height);
-    passes::add_pathtrace(g, pipelines, scene_in, ids[0], std::nullopt, ids[4], seeds,
+    passes::add_pathtrace(g, pipelines, scene_in, ids[0], std::nullopt, ids[4], seeds, rays,
                           {static_cast<std::uint32_t>(frame), seed, max_bounces, spp}, width, height);
     for (auto id : ids) g.output(id, hal::State::CopySrc);
     auto compiled = runtime.compile(g);
@@ -72,5 +76,6 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
   device.read_image(targets[4].image, std::as_writable_bytes(std::span(out.illumination)));
   commands.reset();
   for (auto& t : targets) device.destroy(t.image);
+  device.destroy(ray_counter);
   return out;
 }

@@ -28,6 +28,7 @@ struct Scene {
   scene::Scene room = scene::builtin_scene("cornell", "light-exit");
   render::SceneGpu gpu{device, room, true};
   hal::ImageHandle hdr, display;
+  hal::BufferHandle rays;
   hal::State hdr_state = State::Undefined, display_state = State::Undefined;
   std::uint32_t width = 0, height = 0;
 
@@ -40,7 +41,10 @@ struct Scene {
       width = w;
       height = h;
     }
-    return {hdr, hdr_state, display, display_state};
+    if (!rays) rays = device.create_buffer({"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst});
+    std::array<std::byte, 16> zeros{};
+    device.upload_buffer(rays, 0, zeros);
+    return {hdr, hdr_state, display, display_state, {}, State::Undefined, rays, State::CopyDst};
   }
   void frame_done() { hdr_state = display_state = State::CopySrc; }
 };

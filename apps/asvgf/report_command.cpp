@@ -1,0 +1,298 @@
+// `asvgf report`: renders one animation with every method and setting (raw, EMA 0.2 and 0.05, SVGF,
+// A-SVGF with the default and the seed's à-trous settings, plain accumulation at 1, 2, 4, ... spp),
+// measures each frame against a reference and writes report.md, report.csv and PNG plots.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "commands.hpp"
+#include "progress.hpp"
+#include "render/metrics.hpp"
+#include "report/report.hpp"
+#include "scene/scene.hpp"
+#include "scene_options.hpp"
+
+namespace asvgf::cli {
+namespace {
+
+struct ReportOptions {
+  SceneOptions scene;
+  int frames = 0;  // 0: the whole animation
+  std::string methods;
+  std::uint32_t reference_spp = 512;
+  std::uint32_t max_accumulation_spp = 64;
+  std::string out = "out/report";
+  bool quiet = false;
+};
+
+std::vector<report::RunSpec> all_runs(std::uint32_t max_accumulation_spp) {
+  using frame::Method;
+  std::vector<report::RunSpec> runs;
+  auto add = [&](std::string name, std::string what, Method m, auto&& tweak) {
+    report::RunSpec s;
+    s.name = std::move(name);
+    s.description = std::move(what);
+    s.method = m;
+    tweak(s);
+    runs.push_back(s);
+  };
+  auto none = [](report::RunSpec&) {};
+  add("raw", "1 spp, no filter", Method::Raw, none);
+  add("ema-0.2", "EMA, constant α 0.2, no spatial filter", Method::Ema, none);
+  add("ema-0.05", "EMA, constant α 0.05 (ghosting)", Method::Ema, [](report::RunSpec& s) { s.denoise.alpha = 0.05f; });
+  add("svgf", "SVGF: constant α 0.2, 5 à-trous iterations (B3 5x5)", Method::Svgf, none);
+  add("asvgf", "A-SVGF: adaptive α, 5 à-trous iterations (B3 5x5)", Method::Asvgf, none);
+  add("asvgf-box9", "A-SVGF, the seed's 3x3 box kernel, 9 iterations", Method::Asvgf, [](report::RunSpec& s) {
+    s.denoise.kernel = passes::AtrousKernel::Box;
+    s.denoise.atrous_iterations = 9;
+  });
+  add("asvgf-box15", "A-SVGF, the seed's 3x3 box kernel, 15 iterations", Method::Asvgf, [](report::RunSpec& s) {
+    s.denoise.kernel = passes::AtrousKernel::Box;
+    s.denoise.atrous_iterations = 15;
+  });
+  for (std::uint32_t spp = 1; spp <= max_accumulation_spp; spp *= 2)
+    add("accum-" + std::to_string(spp) + "spp", "plain accumulation, " + std::to_string(spp) + " spp a frame",
+        Method::Reference, [spp](report::RunSpec& s) { s.spp = spp; });
+  return runs;
+}
+
+// --methods: a comma list of method names (raw, ema, svgf, asvgf, reference or accum) or run names.
+std::vector<report::RunSpec> select_runs(std::vector<report::RunSpec> runs, const std::string& list) {
+  if (list.empty()) return runs;
+  std::vector<report::RunSpec> picked;
+  std::stringstream ss(list);
+  std::string token;
+  std::set<std::string> names;
+  while (std::getline(ss, token, ',')) {
+    if (token.empty()) continue;
+    bool any = false;
+    for (const auto& r : runs) {
+      const std::string method(frame::to_string(r.method));
+      if (r.name == token || method == token || (token == "accum" && r.accumulation())) {
+        any = true;
+        names.insert(r.name);
+      }
+    }
+    if (!any)
+      throw CLI::ValidationError("--methods", "'" + token +
+                                                  "' names no run: use raw, ema, svgf, asvgf, reference (accum) "
+                                                  "or a run name such as ema-0.05, asvgf-box9, accum-4spp");
+  }
+  for (const auto& r : runs)
+    if (names.count(r.name)) picked.push_back(r);
+  return picked;
+}
+
+// The part of the image the crops show: all of it when small, else a window near the top right
+// (where the light of light-exit sits and leaves).
+struct CropRegion {
+  std::uint32_t x = 0, y = 0, w = 0, h = 0;
+};
+CropRegion crop_region(std::uint32_t width, std::uint32_t height) {
+  constexpr std::uint32_t kMax = 160;
+  CropRegion r{0, 0, std::min(width, kMax), std::min(height, kMax)};
+  if (width > kMax) r.x = std::min(width - kMax, std::uint32_t(0.68 * width) - kMax / 2);
+  if (height > kMax) r.y = std::min(height - kMax, std::uint32_t(0.3 * height) > kMax / 2 ? std::uint32_t(0.3 * height) - kMax / 2 : 0u);
+  return r;
+}
+report::CropCell crop(const std::vector<std::uint8_t>& rgba, std::uint32_t width, const CropRegion& r) {
+  report::CropCell c{std::vector<std::uint8_t>(std::size_t(r.w) * r.h * 4), r.w, r.h};
+  for (std::uint32_t y = 0; y < r.h; ++y)
+    std::copy_n(&rgba[((std::size_t(r.y) + y) * width + r.x) * 4], std::size_t(r.w) * 4, &c.rgba[std::size_t(y) * r.w * 4]);
+  return c;
+}
+
+void write_atomic(const std::filesystem::path& path, const std::string& text) {
+  const auto tmp = std::filesystem::path(path).concat(".partial");
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    f << text;
+    if (!f) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+std::string command_line(const ReportOptions& o, int frames) {
+  std::string s = "asvgf report --scene " + o.scene.scene + " --animation " + o.scene.animation + " --size " +
+                  o.scene.size + " --frames " + std::to_string(frames) + " --reference-spp " +
+                  std::to_string(o.reference_spp) + " --max-accumulation-spp " + std::to_string(o.max_accumulation_spp) +
+                  " --seed " + std::to_string(o.scene.seed);
+  if (!o.methods.empty()) s += " --methods " + o.methods;
+  if (o.scene.software_bvh) s += " --software-bvh";
+  return s;
+}
+
+int run_report(ReportOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  finish_scene_options(o.scene);
+  const auto specs = select_runs(all_runs(o.max_accumulation_spp), o.methods);
+  const scene::Scene scene = load_scene(o.scene);
+  const int frames = o.frames > 0 ? o.frames : scene.frame_count;
+  auto device = open_device(o.scene);
+  const render::RenderSettings base = render_settings(o.scene);
+
+  report::ReportData d;
+  d.scene = scene.name;
+  d.animation = o.scene.animation;
+  d.width = base.width, d.height = base.height, d.seed = base.seed, d.frames = frames;
+  d.device_name = device->adapter().name;
+  d.device_type = std::string(hal::to_string(device->adapter().type));
+  d.cpu_device = device->adapter().type == hal::DeviceType::Cpu;
+  d.timestamps = device->capabilities().timestamps;
+  d.command_line = command_line(o, frames);
+
+  // Frames with the scene state of the frame before share its reference render.
+  std::vector<bool> changed(std::size_t(frames), false);
+  std::vector<int> group(std::size_t(frames), 0);
+  scene::FrameState previous = scene::evaluate(scene, 0.0f);
+  for (int f = 1; f < frames; ++f) {
+    const scene::FrameState s = scene::evaluate(scene, float(f));
+    changed[std::size_t(f)] = !scene::same_state(s, previous);
+    group[std::size_t(f)] = group[std::size_t(f) - 1] + (changed[std::size_t(f)] ? 1 : 0);
+    previous = s;
+  }
+  d.change = report::find_change(changed);
+  d.reference_renders = group.back() + 1;
+
+  // Frames shown as crops: before, during and after the change, and the last.
+  std::set<int> shown, stored;
+  if (d.change) {
+    shown = {d.change->first - 1, (d.change->first + d.change->last) / 2, d.change->last + 1, frames - 1};
+    for (int f = d.change->first - 1; f <= d.change->last + 3; ++f) stored.insert(f);
+  } else {
+    shown = {1, frames / 2, frames - 1};
+  }
+  for (int f : shown)
+    if (f >= 0 && f < frames) d.crop_frames.push_back(f), stored.insert(f);
+  std::erase_if(stored, [&](int f) { return f < 0 || f >= frames; });
+  const CropRegion region = crop_region(d.width, d.height);
+  d.crop_zoom = std::max(1, int(std::lround(192.0 / std::max(region.w, region.h))));
+  d.crop_note = region.w == d.width && region.h == d.height
+                    ? "whole image, " + std::to_string(d.crop_zoom) + "x"
+                    : std::to_string(region.w) + "x" + std::to_string(region.h) + " crop at (" +
+                          std::to_string(region.x) + "," + std::to_string(region.y) + ")";
+
+  Progress progress("report", d.reference_renders + int(specs.size()) * frames, o.quiet);
+  int done = 0;
+  if (!o.quiet)
+    std::fprintf(stderr, "asvgf report: %s, %ux%u, %d frames, %zu runs, reference %u spp x %d renders on %s\n",
+                 scene.name.c_str(), d.width, d.height, frames, specs.size(), o.reference_spp, d.reference_renders,
+                 d.device_name.c_str());
+
+  std::vector<std::vector<float>> reference(std::size_t(d.reference_renders));
+  std::vector<double> reference_mean(reference.size());
+  {
+    render::RenderSettings r = base;
+    r.method = frame::Method::Reference;
+    r.spp = o.reference_spp;
+    r.seed = base.seed ^ 0x9e3779b9u;  // independent of every method's noise
+    render::Renderer renderer(*device, scene, r);
+    d.reference_spp = renderer.spp_per_frame();
+    d.ray_query = renderer.ray_query();
+    for (int f = 0; f < frames; ++f) {
+      const std::size_t gi = std::size_t(group[std::size_t(f)]);
+      if (f > 0 && gi == std::size_t(group[std::size_t(f) - 1])) continue;
+      render::FrameImages img = renderer.render(f);
+      reference_mean[gi] = render::mean_value(img.hdr);
+      reference[gi] = std::move(img.hdr);
+      d.reference_crops[f] = crop(img.display, d.width, region);
+      progress.step(++done, "reference frame " + std::to_string(f));
+    }
+  }
+  // Crops of frames that share a reference render: copy them from the render's first frame.
+  for (int f : stored) {
+    int g0 = f;
+    while (g0 > 0 && group[std::size_t(g0)] == group[std::size_t(g0) - 1]) --g0;
+    d.reference_crops[f] = d.reference_crops[g0];
+  }
+  std::erase_if(d.reference_crops, [&](const auto& e) { return !stored.count(e.first); });
+
+  for (const auto& spec : specs) {
+    render::RenderSettings s = base;
+    s.method = spec.method;
+    s.spp = spec.spp;
+    s.denoise = spec.denoise;
+    render::Renderer renderer(*device, scene, s);
+    report::RunResult run;
+    run.spec = spec;
+    std::vector<float> prev;
+    for (int f = 0; f < frames; ++f) {
+      render::FrameImages img = renderer.render(f);
+      const std::size_t gi = std::size_t(group[std::size_t(f)]);
+      const auto& ref = reference[gi];
+      report::FrameResult fr;
+      fr.frame = f;
+      fr.relmse = render::relative_mse(img.hdr, ref);
+      fr.ssim = render::ssim(img.hdr, ref, d.width, d.height);
+      fr.temporal = f > 0 ? report::temporal_error(img.hdr, prev, ref, reference[std::size_t(group[std::size_t(f) - 1])])
+                          : NAN;
+      fr.mean = render::mean_value(img.hdr);
+      fr.reference_mean = reference_mean[gi];
+      bool timed = !renderer.timings().empty();
+      double total = 0;
+      for (const auto& t : renderer.timings()) {
+        timed = timed && t.gpu_ms.has_value();
+        if (t.gpu_ms) fr.pass_ms[t.pass] = *t.gpu_ms, total += *t.gpu_ms;
+      }
+      if (timed) fr.gpu_ms = total;
+      if (stored.count(f)) run.crops[f] = crop(img.display, d.width, region);
+      run.frames.push_back(std::move(fr));
+      prev = std::move(img.hdr);
+      char note[96];
+      std::snprintf(note, sizeof note, "%s frame %d relMSE %.3g", spec.name.c_str(), f, run.frames.back().relmse);
+      progress.step(++done, note);
+    }
+    report::summarise(run, d.change);
+    d.runs.push_back(std::move(run));
+  }
+
+  d.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const report::Headline headline = report::compute_headline(d);
+  const std::filesystem::path dir(o.out);
+  std::filesystem::create_directories(dir);
+  report::write_plots(d, headline, dir);
+  write_atomic(dir / "report.csv", report::report_csv(d));
+  write_atomic(dir / "report.md", report::report_markdown(d, headline));
+  if (!o.quiet) {
+    std::fprintf(stderr, "%s\n", headline.text.c_str());
+    std::fprintf(stderr, "report: %s (report.csv and PNG plots beside it), %.0f s\n", (dir / "report.md").string().c_str(),
+                 d.wall_seconds);
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> add_report_command(CLI::App& app) {
+  auto o = std::make_shared<ReportOptions>();
+  o->scene.size = "64x64";
+  auto* cmd = app.add_subcommand("report", "Error against GPU time for every method: report.md, report.csv, PNG plots");
+  auto& s = o->scene;
+  cmd->add_option("--scene", s.scene, "Built-in scene ('cornell') or a scene file (.json)")->capture_default_str();
+  cmd->add_option("--animation", s.animation, "Animation of the built-in scene")
+      ->check(CLI::IsMember({"static", "light-exit", "orbit", "boxes-move"}))
+      ->capture_default_str();
+  cmd->add_option("--size", s.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Frames (default: the whole animation)")->check(CLI::Range(2, 100000));
+  cmd->add_option("--methods", o->methods,
+                  "Comma list restricting the runs: raw, ema, svgf, asvgf, reference (or accum), or run names "
+                  "(ema-0.05, asvgf-box9, accum-4spp, ...)");
+  cmd->add_option("--reference-spp", o->reference_spp, "Samples per pixel of the reference")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  cmd->add_option("--max-accumulation-spp", o->max_accumulation_spp, "Plain accumulation at 1, 2, 4, ... up to this spp")
+      ->check(CLI::Range(1, 1 << 16))
+      ->capture_default_str();
+  cmd->add_option("--seed", s.seed, "Random seed: the same seed gives the same numbers")->capture_default_str();
+  cmd->add_option("--device", s.device, "Vulkan adapter: index or part of its name (default: $ASVGF_DEVICE, else best)");
+  cmd->add_flag("--software-bvh", s.software_bvh, "Trace with the software BVH even where ray queries exist");
+  cmd->add_option("--out", o->out, "Output folder")->capture_default_str();
+  cmd->add_flag("--quiet", o->quiet, "No progress output");
+  return [o] { return run_report(*o); };
+}
+
+}  // namespace asvgf::cli
