@@ -236,7 +236,7 @@ int run_report(ReportOptions& o) {
       double total = 0;
       for (const auto& t : renderer.timings()) {
         timed = timed && t.gpu_ms.has_value();
-        if (t.gpu_ms) fr.pass_ms[t.pass] = *t.gpu_ms, total += *t.gpu_ms;
+        if (t.gpu_ms) fr.pass_ms.emplace_back(t.pass, *t.gpu_ms), total += *t.gpu_ms;
       }
       if (timed) fr.gpu_ms = total;
       if (stored.count(f)) run.crops[f] = crop(img.display, d.width, region);

@@ -1,0 +1,100 @@
+// report/report.hpp: the results of `asvgf report` (runs of every method and setting over one
+// animation, measured per frame against a reference) and what is written from them: report.csv,
+// report.md and the PNG plots.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "frame/frame_graph.hpp"
+#include "passes/denoise_settings.hpp"
+#include "report/plot.hpp"
+#include "report/sequence_metrics.hpp"
+
+namespace asvgf::report {
+
+// One method with one setting, e.g. "ema-0.05" or "accum-8spp".
+struct RunSpec {
+  std::string name;         // short id: csv `run` column, plot legends
+  std::string description;  // one line for the tables
+  frame::Method method = frame::Method::Asvgf;
+  std::uint32_t spp = 1;
+  passes::DenoiseSettings denoise;
+  bool accumulation() const { return method == frame::Method::Reference; }
+};
+
+struct FrameResult {
+  int frame = 0;
+  double relmse = 0, ssim = 0;
+  double temporal = 0;  // NaN on the first frame (no previous frame)
+  double mean = 0, reference_mean = 0;  // mean RGB radiance of the frame and of its reference
+  std::optional<double> gpu_ms;         // whole frame; empty without timestamps
+  std::vector<std::pair<std::string, double>> pass_ms;  // in execution order
+};
+
+struct RunResult {
+  RunSpec spec;
+  std::vector<FrameResult> frames;
+  std::map<int, CropCell> crops;  // display-image crops of the frames the report shows
+  // Filled by summarise():
+  double mean_relmse = 0, mean_ssim = 0, mean_temporal = 0;
+  double mean_relmse_after_change = 0;  // frames from the change on (all frames when none)
+  double gpu_ms = 0;                    // median whole-frame GPU ms; NaN without timestamps
+  std::vector<std::pair<std::string, double>> pass_ms;  // median per pass, in pass order
+  Lag lag;
+};
+
+struct ReportData {
+  std::string scene, animation;
+  std::uint32_t width = 0, height = 0, seed = 0;
+  int frames = 0;
+  std::uint32_t reference_spp = 0;  // as traced (rounded up to equal batches)
+  int reference_renders = 0;        // distinct scene states rendered as references
+  std::string device_name, device_type;
+  bool cpu_device = false;  // lavapipe: GPU times are CPU-emulated
+  bool timestamps = false;
+  bool ray_query = false;
+  std::optional<ChangeWindow> change;
+  std::vector<int> crop_frames;
+  std::string crop_note;  // which part of the image the crops show
+  int crop_zoom = 1;
+  std::vector<RunResult> runs;
+  std::map<int, CropCell> reference_crops;
+  std::string command_line;
+  double wall_seconds = 0;
+};
+
+void summarise(RunResult& run, std::optional<ChangeWindow> change);
+
+// "at 1 spp asvgf reaches the error of plain accumulation at K spp, in X times less GPU time".
+struct Headline {
+  bool available = false;
+  std::string why_not;
+  double asvgf_relmse = 0, asvgf_ms = 0;
+  std::optional<double> k;  // matching accumulation spp
+  bool beyond_max = false;  // asvgf's error is below the largest accumulation's
+  double accumulation_ms = 0, speedup = 0;
+  std::string text;  // the sentence for report.md and the console
+  // The same comparison on the frames before the change only (lit room; empty without a change).
+  std::optional<double> k_before_change;
+  std::string before_change_text;
+};
+Headline compute_headline(const ReportData& data);
+
+const RunResult* find_run(const ReportData& data, const std::string& name);
+
+// Every pass any run timed, in execution order (the run with the most passes sets it).
+std::vector<std::string> pass_columns(const ReportData& data);
+
+// report.csv: one row per run and frame.
+std::string report_csv(const ReportData& data);
+// report.md, linking the plots written by write_plots().
+std::string report_markdown(const ReportData& data, const Headline& headline);
+// error_vs_time.png, relmse_per_frame.png, temporal_per_frame.png, ssim_per_frame.png, crops.png,
+// crops_change.png (when the animation changes). Returns the file names written.
+std::vector<std::string> write_plots(const ReportData& data, const Headline& headline, const std::filesystem::path& dir);
+
+}  // namespace asvgf::report
