@@ -1,0 +1,21 @@
+# `asvgf report` at a tiny size: every method with finite numbers, valid non-empty plots, the same
+# numbers for the same seed, --methods restricting the runs. Output under the build tree.
+set(report_dir ${CMAKE_CURRENT_BINARY_DIR}/report_tests)
+set(report_check "python3 ${CMAKE_CURRENT_SOURCE_DIR}/report_check.py")
+set(report_tiny --size 24x24 --frames 10 --reference-spp 32 --max-accumulation-spp 4 --quiet)
+list(JOIN report_tiny " " report_tiny_args)
+set(report_all_runs raw,ema-0.2,ema-0.05,svgf,asvgf,asvgf-box9,asvgf-box15,accum-1spp,accum-2spp,accum-4spp)
+
+asvgf_add_cli_test("asvgf report writes every method with finite numbers and valid PNG plots" LABEL app EXIT 0
+                   MATCH "report_check: ok: 10 runs x 10 frames"
+                   COMMAND bash -c "rm -rf ${report_dir}/all && $<TARGET_FILE:asvgf> report ${report_tiny_args} --out ${report_dir}/all && ${report_check} check ${report_dir}/all ${report_all_runs}")
+asvgf_add_cli_test("asvgf report gives the same numbers for the same seed and others for another" LABEL app EXIT 0
+                   MATCH "rows differ in relMSE"
+                   COMMAND bash -c "rm -rf ${report_dir}/seed_a ${report_dir}/seed_b ${report_dir}/seed_c && $<TARGET_FILE:asvgf> report ${report_tiny_args} --seed 3 --out ${report_dir}/seed_a && $<TARGET_FILE:asvgf> report ${report_tiny_args} --seed 3 --out ${report_dir}/seed_b && $<TARGET_FILE:asvgf> report ${report_tiny_args} --seed 4 --methods asvgf,accum --out ${report_dir}/seed_c && ${report_check} same ${report_dir}/seed_a ${report_dir}/seed_b && ${report_check} differ ${report_dir}/seed_a ${report_dir}/seed_c")
+asvgf_add_cli_test("asvgf report --methods restricts the runs and says where the report landed" LABEL app EXIT 0
+                   MATCH "report: [^ ]*report_tests/methods/report\\.md"
+                   COMMAND bash -c "rm -rf ${report_dir}/methods && mkdir -p ${report_dir} && $<TARGET_FILE:asvgf> report --size 24x24 --frames 10 --reference-spp 32 --max-accumulation-spp 2 --methods asvgf,reference --out ${report_dir}/methods > ${report_dir}/methods.log 2>&1 && tail -n 3 ${report_dir}/methods.log && ${report_check} check ${report_dir}/methods asvgf,accum-1spp,accum-2spp")
+asvgf_add_cli_test("asvgf report rejects an unknown --methods entry with exit 2" LABEL app EXIT 2 MATCH "--methods.*magic"
+                   COMMAND ${asvgf} report --methods asvgf,magic --out ${report_dir}/never)
+asvgf_add_cli_test("asvgf report rejects an impossible size with exit 2" LABEL app EXIT 2 MATCH "size"
+                   COMMAND ${asvgf} report --size 0x5 --out ${report_dir}/never)

@@ -1,0 +1,183 @@
+#!/usr/bin/env python3
+"""Checks the output of `asvgf report` (standard library only).
+
+  report_check.py check DIR [RUN,RUN,...]  every expected run is in report.csv with finite numbers
+                                           on every frame; report.md has the headline and the seed's
+                                           comparisons; every PNG is valid, non-empty, not flat
+  report_check.py same DIR1 DIR2           report.csv equal except the GPU-time columns (*_ms)
+  report_check.py differ DIR1 DIR2         the error columns differ (another seed)
+"""
+import csv
+import math
+import os
+import struct
+import sys
+import zlib
+
+ERROR_COLUMNS = ["relmse", "ssim", "temporal", "mean", "reference_mean"]
+
+
+def fail(msg):
+    print("report_check: FAIL: " + msg)
+    sys.exit(1)
+
+
+def read_csv(directory):
+    path = os.path.join(directory, "report.csv")
+    if not os.path.isfile(path):
+        fail(path + " is missing")
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        fail(path + " has no rows")
+    return rows
+
+
+def decode_png(path):
+    """Returns (width, height, set of distinct pixels); fails on anything but a valid 8-bit PNG."""
+    data = open(path, "rb").read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        fail(path + ": no PNG signature")
+    pos, idat, ihdr = 8, b"", None
+    while pos < len(data):
+        if pos + 8 > len(data):
+            fail(path + ": truncated chunk")
+        (n,) = struct.unpack(">I", data[pos:pos + 4])
+        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]
+        (crc,) = struct.unpack(">I", data[pos + 8 + n:pos + 12 + n])
+        if zlib.crc32(kind + body) & 0xFFFFFFFF != crc:
+            fail(path + ": bad CRC in " + kind.decode("latin-1"))
+        if kind == b"IHDR":
+            ihdr = struct.unpack(">IIBBBBB", body)
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + n
+    if ihdr is None:
+        fail(path + ": no IHDR")
+    w, h, depth, colour = ihdr[:4]
+    if w == 0 or h == 0:
+        fail(path + ": IHDR size is %dx%d" % (w, h))
+    channels = {6: 4, 2: 3, 0: 1, 4: 2}.get(colour)
+    if depth != 8 or channels is None:
+        fail(path + ": unexpected bit depth %d / colour type %d" % (depth, colour))
+    raw = zlib.decompress(idat)
+    stride = w * channels
+    if len(raw) != h * (stride + 1):
+        fail(path + ": image data has %d bytes, expected %d" % (len(raw), h * (stride + 1)))
+    prev, pixels, i = bytearray(stride), set(), 0
+    for _ in range(h):
+        f, line = raw[i], bytearray(raw[i + 1:i + 1 + stride])
+        i += stride + 1
+        for x in range(stride):
+            a = line[x - channels] if x >= channels else 0
+            b = prev[x]
+            c = prev[x - channels] if x >= channels else 0
+            if f == 1:
+                line[x] = (line[x] + a) & 255
+            elif f == 2:
+                line[x] = (line[x] + b) & 255
+            elif f == 3:
+                line[x] = (line[x] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+            elif f != 0:
+                fail(path + ": unknown filter %d" % f)
+        for x in range(0, stride, channels * 7):  # a sample of pixels is enough to see it is not flat
+            pixels.add(bytes(line[x:x + channels]))
+        prev = line
+    return w, h, pixels
+
+
+def finite(text):
+    try:
+        return math.isfinite(float(text))
+    except ValueError:
+        return False
+
+
+def check(directory, expected):
+    rows = read_csv(directory)
+    runs = {}
+    for row in rows:
+        runs.setdefault(row["run"], []).append(row)
+    for name in expected:
+        if name not in runs:
+            fail("run %s is not in report.csv (runs: %s)" % (name, ", ".join(runs)))
+    frames = {len(v) for v in runs.values()}
+    if len(frames) != 1:
+        fail("runs have different frame counts: %s" % frames)
+    for name, rs in runs.items():
+        for row in rs:
+            for col in ERROR_COLUMNS:
+                if col == "temporal" and row["frame"] == "0":
+                    if row[col] != "":
+                        fail("%s frame 0: temporal error should be empty (no previous frame)" % name)
+                    continue
+                if not finite(row[col]):
+                    fail("%s frame %s: %s is %r, not a finite number" % (name, row["frame"], col, row[col]))
+            if row["gpu_ms"] != "" and not finite(row["gpu_ms"]):
+                fail("%s frame %s: gpu_ms is %r" % (name, row["frame"], row["gpu_ms"]))
+    md_path = os.path.join(directory, "report.md")
+    if not os.path.isfile(md_path):
+        fail("report.md is missing")
+    md = open(md_path, encoding="utf-8").read()
+    for needle in ["of plain accumulation", "### 1 spp, EMA 0.2, EMA 0.05 (ghosting), SVGF, A-SVGF and the reference",
+                   "### 9 against 15 à-trous iterations", "### Constant against adaptive α", "## Definitions"]:
+        if needle not in md:
+            fail("report.md lacks %r" % needle)
+    pngs = sorted(f for f in os.listdir(directory) if f.endswith(".png"))
+    for want in ["error_vs_time.png", "relmse_per_frame.png", "temporal_per_frame.png", "ssim_per_frame.png",
+                 "crops.png"]:
+        if want not in pngs:
+            fail(want + " is missing")
+    for name in pngs:
+        if "(" + name + ")" not in md:
+            fail("report.md does not link " + name)
+        w, h, pixels = decode_png(os.path.join(directory, name))
+        if len(pixels) < 3:
+            fail("%s (%dx%d) is flat: %d distinct colours" % (name, w, h, len(pixels)))
+        print("%s: %dx%d, %d+ colours" % (name, w, h, len(pixels)))
+    print("report_check: ok: %d runs x %d frames, %d plots" % (len(runs), frames.pop(), len(pngs)))
+
+
+def numbers(directory):
+    rows = read_csv(directory)
+    keep = [c for c in rows[0].keys() if not c.endswith("_ms")]
+    return keep, [[row[c] for c in keep] for row in rows]
+
+
+def same(a, b):
+    ka, ra = numbers(a)
+    kb, rb = numbers(b)
+    if ka != kb or len(ra) != len(rb):
+        fail("columns or row counts differ")
+    for i, (x, y) in enumerate(zip(ra, rb)):
+        if x != y:
+            diff = [c for c, u, v in zip(ka, x, y) if u != v]
+            fail("row %d (%s frame %s) differs in %s" % (i + 2, x[0], x[ka.index("frame")], diff))
+    print("report_check: ok: %d rows identical apart from the GPU-time columns" % len(ra))
+
+
+def differ(a, b):
+    """Compares the rows both reports have (same run and frame); b may hold fewer runs."""
+    ra = {(r["run"], r["frame"]): r["relmse"] for r in read_csv(a)}
+    rb = {(r["run"], r["frame"]): r["relmse"] for r in read_csv(b)}
+    common = [k for k in rb if k in ra]
+    if not common:
+        fail("the reports share no run and frame")
+    changed = sum(1 for k in common if ra[k] != rb[k])
+    if changed == 0:
+        fail("relMSE is identical in every shared row: the seed changes nothing")
+    print("report_check: ok: %d of %d shared rows differ in relMSE" % (changed, len(common)))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) >= 3 and sys.argv[1] == "check":
+        check(sys.argv[2], sys.argv[3].split(",") if len(sys.argv) > 3 and sys.argv[3] else [])
+    elif len(sys.argv) == 4 and sys.argv[1] in ("same", "differ"):
+        (same if sys.argv[1] == "same" else differ)(sys.argv[2], sys.argv[3])
+    else:
+        print(__doc__)
+        sys.exit(2)
