@@ -113,7 +113,7 @@ Canvas draw_plot(const PlotSpec& spec, std::uint32_t width, std::uint32_t height
   int legend_w = 0;
   for (const auto& s : spec.series) legend_w = std::max(legend_w, Canvas::text_width(s.label, kText));
   legend_w += 60;
-  const int left = 100, top = spec.note.empty() ? 50 : 70, bottom = 60;
+  const int left = 100, top = 56 + (spec.subtitle.empty() ? 0 : 22) + (spec.note.empty() ? 0 : 22), bottom = 60;
   const int right = legend_w + 30;
   const int x0 = left, x1 = int(width) - right, y0 = top, y1 = int(height) - bottom;
 
@@ -166,10 +166,12 @@ Canvas draw_plot(const PlotSpec& spec, std::uint32_t width, std::uint32_t height
         c.text(int(px) + 7, int(py) + 5, s.point_labels[i], s.color, kText);
     }
 
-  c.text(x0, 14, spec.title, kInk, kText);
-  if (!spec.note.empty()) c.text(x0, 38, spec.note, {170, 40, 40, 255}, kText);
+  int line_y = 12;
+  c.text(8, line_y, spec.title, kInk, kText);
+  if (!spec.subtitle.empty()) c.text(8, line_y += 22, spec.subtitle, {110, 110, 110, 255}, kText);
+  if (!spec.note.empty()) c.text(8, line_y += 22, spec.note, {170, 40, 40, 255}, kText);
   c.text((x0 + x1 - Canvas::text_width(spec.x_label, kText)) / 2, y1 + 36, spec.x_label, kInk, kText);
-  c.text(8, y0 - 22 + (spec.note.empty() ? 0 : 4), spec.y_label, kInk, kText);
+  c.text(8, y0 - 20, spec.y_label, kInk, kText);
 
   // Legend to the right of the plot area.
   int ly = y0 + 4;

@@ -48,7 +48,8 @@ Series frame_series(const ReportData& d, const RunResult& r, std::size_t index, 
 PlotSpec per_frame_plot(const ReportData& d, const Headline& h, const std::string& title, const std::string& y_label,
                         double FrameResult::*field, bool log_y) {
   PlotSpec p;
-  p.title = title + " - " + d.scene + ", " + std::to_string(d.width) + "x" + std::to_string(d.height);
+  p.title = title;
+  p.subtitle = d.scene + ", " + std::to_string(d.width) + "x" + std::to_string(d.height) + ", seed " + std::to_string(d.seed);
   p.x_label = "frame";
   p.y_label = y_label;
   p.log_y = log_y;
@@ -76,8 +77,9 @@ std::vector<std::string> write_plots(const ReportData& d, const Headline& h, con
 
   {  // Error against GPU time, log-log: accumulation as a curve, every other run as a point.
     PlotSpec p;
-    p.title = "mean relMSE against GPU time a frame - " + d.scene + ", " + std::to_string(d.width) + "x" +
-              std::to_string(d.height) + ", " + std::to_string(d.frames) + " frames";
+    p.title = "mean relMSE against GPU time per frame";
+    p.subtitle = d.scene + ", " + std::to_string(d.width) + "x" + std::to_string(d.height) + ", " +
+                 std::to_string(d.frames) + " frames, reference " + std::to_string(d.reference_spp) + " spp";
     if (d.cpu_device) p.note = "GPU times CPU-emulated on " + d.device_name + ": no speed claim";
     p.x_label = d.cpu_device ? "GPU ms per frame (CPU-emulated, median)" : "GPU ms per frame (median)";
     p.y_label = "mean relMSE";
