@@ -56,7 +56,7 @@ double luminance(const float* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722
 
 }  // namespace
 
-TEST_CASE("pipeline: a closed diffuse enclosure with emission Le and albedo rho renders Le/(1-rho)") {
+TEST_CASE("a closed diffuse enclosure with emission Le and albedo rho renders Le/(1-rho)") {
   ValidatedDevice device;
   const float le = 1.0f, rho = 0.5f;
   const auto scene = furnace(le, rho);
@@ -77,7 +77,7 @@ TEST_CASE("pipeline: a closed diffuse enclosure with emission Le and albedo rho 
   CHECK(worst < 0.25 * le / (1.0 - rho));
 }
 
-TEST_CASE("pipeline: a diffuse plane lit by a sphere light matches the analytic irradiance") {
+TEST_CASE("a diffuse plane lit by a sphere light matches the analytic irradiance") {
   ValidatedDevice device;
   scene::Mesh plane;
   plane.name = "plane";
@@ -144,7 +144,7 @@ glm::vec3 world_point(const render::GpuCamera& c, std::uint32_t x, std::uint32_t
 
 }  // namespace
 
-TEST_CASE("pipeline: motion vectors are right for a known camera move and a known object move") {
+TEST_CASE("motion vectors are right for a known camera move and a known object move") {
   ValidatedDevice device;
   const std::uint32_t w = 40, h = 32;
   SUBCASE("camera move") {
@@ -198,7 +198,7 @@ TEST_CASE("pipeline: motion vectors are right for a known camera move and a know
   }
 }
 
-TEST_CASE("pipeline: ray-query and software-BVH variants give the same G-buffer except edge ties, and the same path-traced pixels but for rare paths") {
+TEST_CASE("ray-query and software-BVH variants give the same G-buffer except edge ties, and the same path-traced pixels but for rare paths") {
   // Both variants find the closest triangle, then recompute t and the barycentrics with the same
   // routine, so equal triangles give equal bits. A ray through an edge shared by two coplanar
   // triangles (a quad's diagonal) has two correct closest hits at the same point, and the hardware
@@ -239,7 +239,7 @@ TEST_CASE("pipeline: ray-query and software-BVH variants give the same G-buffer 
   }
 }
 
-TEST_CASE("pipeline: a fixed seed gives bit-identical frames, another seed different ones") {
+TEST_CASE("a fixed seed gives bit-identical frames, another seed different ones") {
   ValidatedDevice device;
   const auto scene = scene::builtin_scene("cornell", "light-exit");
   auto frames = [&](std::uint32_t seed) {

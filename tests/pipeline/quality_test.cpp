@@ -46,7 +46,7 @@ std::vector<double> errors(hal::Device& device, const scene::Scene& scene, const
 
 }  // namespace
 
-TEST_CASE("pipeline: quality on orbit after 16 frames: svgf and asvgf have at most 1/10 of raw's relMSE") {
+TEST_CASE("quality on orbit after 16 frames: svgf and asvgf have at most 1/10 of raw's relMSE") {
   ValidatedDevice device;
   const auto scene = scene::builtin_scene("cornell", "orbit");
   const int frame = 16;
@@ -60,7 +60,7 @@ TEST_CASE("pipeline: quality on orbit after 16 frames: svgf and asvgf have at mo
   CHECK(asvgf <= raw / 10);
 }
 
-TEST_CASE("pipeline: quality on light-exit: asvgf recovers in a third of svgf's frames, ema 0.05 lags more than 0.2") {
+TEST_CASE("quality on light-exit: asvgf recovers in a third of svgf's frames, ema 0.05 lags more than 0.2") {
   // The light stops outside the room at frame 9 and nothing moves after it, so one reference
   // serves every frame from 9 on. A method's steady error: the mean relMSE of frames 35..39 of a
   // fresh run that starts at frame 9 (the final, static scene, no stale light in any history).
