@@ -92,6 +92,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   }
 
   ResourceId filtered = illumination;
+  std::optional<ResourceId> shown_moments, shown_variance;  // for the debug view
   if (s.method == Method::Reference) {
     const ResourceId accumulation = g.add_image("accumulation", w, h, F::RGBA32F, Lifetime::Persistent);
     passes::add_accumulate(g, pipelines_, illumination, accumulation, s.accumulation_valid, w, h);
@@ -106,8 +107,11 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
                       gradient_final},
                   denoise);
     filtered = integrated;
+    shown_moments = moments;
+    shown_variance = integrated;
     if (spatial) {
       ResourceId current = g.add_image("color_variance", w, h, F::RGBA16F);
+      shown_variance = current;
       variance_.add(g, {integrated, moments, depth_normal, current}, denoise);
       for (int i = 0; i < denoise.atrous_iterations; ++i) {
         const ResourceId next = g.add_image("atrous." + std::to_string(i + 1), w, h, F::RGBA16F);
@@ -126,7 +130,9 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   // The intermediate-buffer view is an output only when asked for; otherwise it is culled.
   const ResourceId debug = targets.debug ? g.import("debug_view", targets.debug, targets.debug_state, w, h)
                                          : g.add_image("debug_view", w, h, F::RGBA8Unorm);
-  passes::add_debug_view(g, pipelines_, {depth_normal, motion, albedo, illumination, debug},
+  passes::add_debug_view(g, pipelines_,
+                         {depth_normal, motion, albedo, illumination, debug, gradient_final, shown_moments,
+                          shown_variance, denoise.alpha, denoise.history_cap},
                          s.debug_view.value_or(passes::DebugView::Normals), w, h);
   if (s.debug_view) g.output(debug, hal::State::CopySrc);
   return g;

@@ -34,7 +34,8 @@ struct GradientSelectParams {
 };
 struct DebugViewParams {
   std::uint32_t width, height, mode;
-  float depth_scale;
+  float depth_scale, alpha, history_cap;
+  std::uint32_t available, pad;
 };
 struct AccumulateParams {
   std::uint32_t width, height, history_valid, pad;
@@ -150,12 +151,18 @@ void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::
 
 void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const DebugViewInputs& in, DebugView view,
                     std::uint32_t width, std::uint32_t height) {
-  const DebugViewParams params{width, height, static_cast<std::uint32_t>(view), 0.25f};
+  // Buffers the method lacks are bound to the noisy input (always there) and flagged unavailable.
+  const std::uint32_t available = (in.gradient ? 1u : 0u) | (in.moments ? 2u : 0u) | (in.variance ? 4u : 0u);
+  const DebugViewParams params{width, height, static_cast<std::uint32_t>(view), 0.25f, in.alpha, in.history_cap,
+                               available, 0};
   add_compute_pass(graph, "debug_view", pipelines.get(shaders::debug_view, sizeof(params)),
                    {{"depth_normal", in.depth_normal},
                     {"motion", in.motion},
                     {"albedo", in.albedo},
                     {"illumination", in.illumination},
+                    {"gradient", in.gradient.value_or(in.illumination)},
+                    {"moments", in.moments.value_or(in.illumination)},
+                    {"variance", in.variance.value_or(in.illumination)},
                     {"debug_view", in.target, Use::ShaderWrite}},
                    to_bytes(params), groups_2d(width, height));
 }

@@ -60,9 +60,19 @@ void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::
                     graph::ResourceId accumulation, bool history_valid, std::uint32_t width, std::uint32_t height);
 
 // The demo's view of an intermediate buffer.
-enum class DebugView : std::uint32_t { Normals = 0, Depth = 1, Motion = 2, Albedo = 3, NoisyInput = 4 };
+// The last four are the denoiser's state as heat maps (shaders/frame/debug_view.comp): A-SVGF's
+// temporal gradient lambda, the temporal blend factor alpha, the luminance standard deviation that
+// steers the a-trous filter, the history length; black where the method has no such buffer.
+enum class DebugView : std::uint32_t {
+  Normals = 0, Depth = 1, Motion = 2, Albedo = 3, NoisyInput = 4,
+  Gradient = 5, Alpha = 6, Variance = 7, HistoryLength = 8
+};
 struct DebugViewInputs {
   graph::ResourceId depth_normal, motion, albedo, illumination, target;
+  std::optional<graph::ResourceId> gradient;  // 1/3 res (delta^, Delta^), when the gradient ran this frame
+  std::optional<graph::ResourceId> moments;   // temporal's output (E[l], E[l^2], n)
+  std::optional<graph::ResourceId> variance;  // colour with variance in .a (variance pass, or temporal's)
+  float alpha = 0.2f, history_cap = 32.0f;    // the denoiser settings the temporal pass used
 };
 void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const DebugViewInputs& inputs, DebugView view,
                     std::uint32_t width, std::uint32_t height);

@@ -1,5 +1,10 @@
 // debug_view: one intermediate buffer as a displayable image (the demo's buffer views).
-// mode 0 normals, 1 linear depth, 2 motion, 3 albedo, 4 noisy input (tonemapped).
+// mode 0 normals, 1 linear depth, 2 motion, 3 albedo, 4 noisy input (tonemapped), and the denoiser's
+// state as heat maps (black, red, yellow, white): 5 temporal gradient lambda = min(1, |delta^|/Delta^),
+// 6 temporal blend factor alpha = max((1 - lambda) alpha + lambda, 1/n) as the temporal pass computes
+// it, 7 standard deviation of luminance s/(1+s) (what the a-trous filter is steered by),
+// 8 history length n / history_cap. A buffer the method does not have (`available` bit clear)
+// shows black.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -12,6 +17,10 @@ layout(set = 0, binding = 0, std140) uniform Params {
   uint height;
   uint mode;
   float depth_scale;  // depth shown as depth * depth_scale
+  float alpha;        // the temporal pass's constant alpha
+  float history_cap;
+  uint available;     // 1: gradient (1/3 res: delta^, Delta^), 2: moments (E[l], E[l^2], n), 4: variance (.a)
+  uint pad;
 } params;
 
 layout(set = 0, binding = 1) uniform texture2D depth_normal;
@@ -19,6 +28,20 @@ layout(set = 0, binding = 2) uniform texture2D motion;
 layout(set = 0, binding = 3) uniform texture2D albedo;
 layout(set = 0, binding = 4) uniform texture2D illumination;
 layout(set = 0, binding = 5, rgba8) writeonly uniform image2D debug_view;
+layout(set = 0, binding = 6) uniform texture2D gradient;
+layout(set = 0, binding = 7) uniform texture2D moments;
+layout(set = 0, binding = 8) uniform texture2D variance;
+
+vec3 heat(float t) {
+  t = clamp(t, 0.0, 1.0);
+  return clamp(vec3(3.0 * t, 3.0 * t - 1.0, 3.0 * t - 2.0), 0.0, 1.0);
+}
+
+float gradient_lambda(ivec2 p) {
+  if ((params.available & 1u) == 0u) return 0.0;
+  vec2 g = texelFetch(gradient, min(p / 3, textureSize(gradient, 0) - 1), 0).xy;
+  return g.y > 0.0 ? min(1.0, abs(g.x) / g.y) : 0.0;
+}
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -34,9 +57,24 @@ void main() {
     c = abs(m.x) > 1e5 ? vec3(1.0, 0.0, 1.0) : vec3(clamp(0.5 + m * 0.05, 0.0, 1.0), 0.5);
   } else if (params.mode == 3u) {
     c = texelFetch(albedo, p, 0).rgb;
-  } else {
+  } else if (params.mode == 4u) {
     vec3 l = texelFetch(illumination, p, 0).rgb * texelFetch(albedo, p, 0).rgb;
     c = l / (1.0 + l);
+  } else if (params.mode == 5u) {
+    c = heat(gradient_lambda(p));
+  } else if (params.mode == 6u) {
+    if ((params.available & 2u) != 0u) {
+      float n = texelFetch(moments, p, 0).z;
+      float lambda = gradient_lambda(p);
+      c = heat(n > 0.0 ? max((1.0 - lambda) * params.alpha + lambda, 1.0 / n) : 1.0);
+    }
+  } else if (params.mode == 7u) {
+    if ((params.available & 4u) != 0u) {
+      float s = sqrt(max(texelFetch(variance, p, 0).a, 0.0));
+      c = heat(s / (1.0 + s));
+    }
+  } else {
+    if ((params.available & 2u) != 0u) c = heat(texelFetch(moments, p, 0).z / max(params.history_cap, 1.0));
   }
   imageStore(debug_view, p, vec4(c, 1.0));
 }
