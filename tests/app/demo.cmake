@@ -1,0 +1,68 @@
+# asvgf-demo: command line, and under xvfb-run a scripted run compared with `asvgf render`, and
+# resizes during a run with the validation layer on.
+if(NOT TARGET asvgf-demo)
+  return()
+endif()
+
+# Compares two PNGs channel by channel (stb_image from Debian's libstb, header only).
+add_executable(demo_compare_png ${CMAKE_CURRENT_LIST_DIR}/demo_compare_png.cpp)
+asvgf_warnings(demo_compare_png)
+
+set(demo $<TARGET_FILE:asvgf-demo>)
+asvgf_add_cli_test("asvgf-demo --help lists the options and the controls" LABEL app EXIT 0
+                   MATCH "--frames.*--screenshot.*--resize-at.*PageUp.*right mouse drag.*1 2 3 4 5.*Esc"
+                   COMMAND bash -c "$<TARGET_FILE:asvgf-demo> --help | tr '\\n' ' '")
+asvgf_add_cli_test("asvgf-demo rejects a malformed --resize-at with exit 2" LABEL app EXIT 2 MATCH "--resize-at"
+                   COMMAND ${demo} --resize-at 3 64by64)
+asvgf_add_cli_test("asvgf-demo rejects an unknown --view with exit 2" LABEL app EXIT 2 MATCH "--view"
+                   COMMAND ${demo} --view sideways)
+
+find_program(ASVGF_XVFB_RUN xvfb-run)
+if(NOT ASVGF_XVFB_RUN)
+  message(STATUS "asvgf-demo: xvfb-run not found, the window tests are left out (tools/bootstrap.sh installs xvfb)")
+  return()
+endif()
+
+# The screenshot of frame 29 must match `asvgf render`'s frame_0029.png with the same scene,
+# animation (orbit: the camera moves, so a wrong animation time shows), method, size and seed.
+# Tolerance: no channel off by more than 2 8-bit steps and at most 2% of the pixels different at
+# all. Why not 0: the pipeline itself is not bit-reproducible while things move. gradient_select
+# claims each 3x3 stratum with a first-come atomicCompSwap, so which previous sample seeds it
+# depends on the order lavapipe's threads run the workgroups; six runs of `asvgf render` with these
+# settings differed from each other by 1 step in up to 33 of 4096 pixels (0.8%). A real divergence
+# is far outside: frame 28 instead of 29, seed 8 instead of 7, or svgf instead of asvgf each change
+# 47-83% of the pixels by up to 12-31 steps.
+set(demo_shot ${CMAKE_CURRENT_BINARY_DIR}/demo_screenshot)
+asvgf_add_cli_test("asvgf-demo --frames 30 --screenshot equals asvgf render frame 29 under validation" LABEL app EXIT 0
+                   MATCH "validation messages: 0.*demo_compare_png: .*match"
+                   COMMAND bash -c "set -o pipefail && ( rm -rf '${demo_shot}' && \
+$<TARGET_FILE:asvgf> render --frames 30 --method asvgf --size 64x64 --animation orbit --seed 7 --out '${demo_shot}' --quiet && \
+${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 30 --method asvgf --size 64x64 --animation orbit --seed 7 \
+--validation --screenshot '${demo_shot}/demo.png' && \
+$<TARGET_FILE:demo_compare_png> '${demo_shot}/frame_0029.png' '${demo_shot}/demo.png' 2 0.02 ) 2>&1 | tr '\\n' ' '")
+
+# A resize in the middle of a run recreates the swapchain (render size kept, the blit scales), and
+# with --fit-window also the renderer; the validation layer stays silent in both.
+asvgf_add_cli_test("asvgf-demo resized at frame 4 recreates the swapchain with no validation message" LABEL app EXIT 0
+                   MATCH "frame 4: window resized to 96x72 \\(framebuffer 96x72\\).*8 frames. swapchain created ([2-9]|[1-9][0-9]) times.*validation messages: 0"
+                   COMMAND bash -c "set -o pipefail && ${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 8 --size 32x32 \
+--method asvgf --animation light-exit --validation --resize-at 4 96x72 2>&1 | tr '\\n' ' '")
+asvgf_add_cli_test("asvgf-demo --fit-window resized at frame 3 renders at the new size with no validation message" LABEL app EXIT 0
+                   MATCH "frame 3: window resized to 48x40 \\(framebuffer 48x40\\).*6 frames. swapchain created ([2-9]|[1-9][0-9]) times.*48x40.*validation messages: 0"
+                   COMMAND bash -c "set -o pipefail && ${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 6 --window 32x32 \
+--fit-window --method svgf --validation --resize-at 3 48x40 2>&1 | tr '\\n' ' '")
+# The denoiser-state views (heat maps from debug_view.comp) on a frame where the box moves, so the
+# gradient passes run, for each method that has the buffer.
+asvgf_add_cli_test("asvgf-demo shows the gradient, alpha, variance and history views with no validation message" LABEL app EXIT 0
+                   MATCH "view gradient.*validation messages: 0.*view alpha.*validation messages: 0.*view variance.*validation messages: 0.*view history.*validation messages: 0"
+                   COMMAND bash -c "set -o pipefail && ( \
+${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 6 --size 32x32 --animation boxes-move --validation --view gradient && \
+${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 6 --size 32x32 --animation boxes-move --validation --view alpha --method svgf && \
+${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 6 --size 32x32 --animation boxes-move --validation --view variance --method ema && \
+${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 6 --size 32x32 --animation boxes-move --validation --view history \
+) 2>&1 | tr '\\n' ' '")
+set_tests_properties("app: asvgf-demo shows the gradient, alpha, variance and history views with no validation message"
+                     "app: asvgf-demo --frames 30 --screenshot equals asvgf render frame 29 under validation"
+                     "app: asvgf-demo resized at frame 4 recreates the swapchain with no validation message"
+                     "app: asvgf-demo --fit-window resized at frame 3 renders at the new size with no validation message"
+                     PROPERTIES TIMEOUT 600 RUN_SERIAL TRUE)
