@@ -6,6 +6,7 @@
 #include "shaders/gbuffer.rayquery.hpp"
 #include "shaders/gbuffer.software.hpp"
 #include "shaders/gradient_clear.hpp"
+#include "shaders/gradient_resolve.hpp"
 #include "shaders/gradient_select.hpp"
 #include "shaders/pathtrace.rayquery.hpp"
 #include "shaders/pathtrace.rayquery_gradients.hpp"
@@ -46,7 +47,9 @@ std::vector<Binding> scene_bindings(const SceneInputs& s, const hal::ShaderInfo&
   std::vector<Binding> all = {{"triangles", s.triangles},
                               {"previous_triangles", s.previous_triangles},
                               {"materials", s.materials},
-                              {"lights", s.lights}};
+                              {"lights", s.lights},
+                              {"triangle_uvs", s.triangle_uvs},
+                              {"texels", s.texels}};
   if (s.ray_query) all.push_back({"scene", s.tlas, Use::AccelRead});
   else all.insert(all.end(), {{"bvh_nodes", s.bvh_nodes}, {"bvh_triangles", s.bvh_triangles}});
   std::vector<Binding> used;
@@ -74,6 +77,8 @@ SceneInputs import_scene(graph::RenderGraph& graph, const render::SceneGpu& scen
   s.previous_triangles = graph.import("scene.previous_triangles", scene.previous_triangles(), read);
   s.materials = graph.import("scene.materials", scene.materials(), read);
   s.lights = graph.import("scene.lights", scene.lights(), read);
+  s.triangle_uvs = graph.import("scene.triangle_uvs", scene.triangle_uvs(), read);
+  s.texels = graph.import("scene.texels", scene.texels(), read);
   s.light_count = scene.light_count();
   s.sphere_count = scene.sphere_light_count();
   s.camera = render::make_camera(scene.state().camera, width, height);
@@ -125,14 +130,23 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
                     {"gradient_prev", t.gradient_prev, Use::ShaderWrite}},
                    to_bytes(clear), groups_2d(sw, sh))
       .skip_if(!skip_reason.empty(), skip_reason);
+  // Bids, then the winners write: the lowest bid wins whatever order invocations run in.
   const GradientSelectParams select{scene.camera, width, height, sw, sh, frame, 0, 0, 0};
   add_compute_pass(graph, "gradient_select", pipelines.get(shaders::gradient_select, sizeof(select)),
                    {{"triangles", scene.triangles},
                     {"prev_visibility", t.visibility, Use::ShaderRead, true},
+                    {"depth_normal", t.depth_normal},
+                    {"claims", t.claims, Use::ShaderReadWrite}},
+                   to_bytes(select), groups_2d(sw, sh))
+      .skip_if(!skip_reason.empty(), skip_reason);
+  add_compute_pass(graph, "gradient_resolve", pipelines.get(shaders::gradient_resolve, sizeof(select)),
+                   {{"triangles", scene.triangles},
+                    {"prev_visibility", t.visibility, Use::ShaderRead, true},
                     {"prev_rng_seed", t.rng_seed, Use::ShaderRead, true},
                     {"prev_illumination", t.illumination, Use::ShaderRead, true},
-                    {"depth_normal", t.depth_normal},
-                    {"claims", t.claims, Use::ShaderReadWrite},
+                    // No depth_normal: a winner passed its tests in gradient_select already.
+                    {"claims", t.claims},
+                    // Written only where a sample landed: gradient_clear's values stay elsewhere.
                     {"gradient_seeds", t.gradient_seeds, Use::ShaderReadWrite},
                     {"gradient_prev", t.gradient_prev, Use::ShaderReadWrite}},
                    to_bytes(select), groups_2d(sw, sh))

@@ -15,6 +15,7 @@ struct SceneInputs {
   bool ray_query = false;
   graph::ResourceId tlas = 0, bvh_nodes = 0, bvh_triangles = 0;
   graph::ResourceId triangles = 0, previous_triangles = 0, materials = 0, lights = 0;
+  graph::ResourceId triangle_uvs = 0, texels = 0;  // albedo textures
   std::uint32_t light_count = 0, sphere_count = 0;
   render::GpuCamera camera{}, previous_camera{};
 };
@@ -50,7 +51,8 @@ struct GradientSelectTargets {
   graph::ResourceId claims;        // transient buffer, one uint per stratum
   graph::ResourceId gradient_seeds, gradient_prev;
 };
-// Two passes: gradient_clear, then gradient_select. Left out, with `skip_reason`, when not empty.
+// Three passes: gradient_clear, gradient_select (bids), gradient_resolve (the winners write). Left
+// out, with `skip_reason`, when not empty.
 void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
                          const GradientSelectTargets& targets, std::uint32_t frame, std::uint32_t width,
                          std::uint32_t height, const std::string& skip_reason);

@@ -44,8 +44,11 @@ SceneGpu::SceneGpu(hal::Device& device, const scene::Scene& scene, bool ray_quer
   std::vector<GpuMaterial> materials;
   for (const auto& m : scene.materials) {
     const bool emissive = m.emission.r > 0 || m.emission.g > 0 || m.emission.b > 0;
-    materials.push_back({glm::vec4(m.albedo, 0), glm::vec4(m.emission, emissive ? 1.0f : 0.0f)});
+    textured_ = textured_ || m.albedo_texture >= 0;
+    materials.push_back({glm::vec4(m.albedo, static_cast<float>(m.albedo_texture + 1)),
+                         glm::vec4(m.emission, emissive ? 1.0f : 0.0f)});
   }
+  upload_textures();
   if (materials.empty()) materials.push_back({glm::vec4(0.8f), glm::vec4(0)});
   materials_ = make_buffer("scene.materials", materials.size() * sizeof(GpuMaterial));
   device.upload_buffer(materials_, 0, bytes_of(materials));
@@ -81,6 +84,41 @@ SceneGpu::~SceneGpu() {
   } catch (...) {
     // Nothing to release on a lost device.
   }
+}
+
+void SceneGpu::upload_textures() {
+  // Texture coordinates per triangle corner, in the same order as world_triangles().
+  std::vector<GpuTriangleUv> uvs;
+  std::vector<std::uint32_t> texels;
+  if (textured_) {
+    for (const auto& inst : scene_.instances) {
+      const auto& mesh = scene_.meshes.at(inst.mesh);
+      for (std::uint32_t t = 0; t < mesh.triangle_count(); ++t) {
+        GpuTriangleUv uv{};
+        if (!mesh.uvs.empty()) {
+          uv.uv0 = mesh.uvs.at(mesh.indices.at(3 * t));
+          uv.uv1 = mesh.uvs.at(mesh.indices.at(3 * t + 1));
+          uv.uv2 = mesh.uvs.at(mesh.indices.at(3 * t + 2));
+        }
+        uvs.push_back(uv);
+      }
+    }
+    texels.resize(scene_.textures.size() * 4);  // the table, filled below
+    for (std::size_t k = 0; k < scene_.textures.size(); ++k) {
+      const auto& tex = scene_.textures[k];
+      const GpuTexture entry{static_cast<std::uint32_t>(texels.size()), tex.width, tex.height, 0};
+      std::memcpy(&texels[4 * k], &entry, sizeof entry);
+      for (std::size_t i = 0; i + 3 < tex.rgba8.size(); i += 4)
+        texels.push_back(std::uint32_t(tex.rgba8[i]) | std::uint32_t(tex.rgba8[i + 1]) << 8 |
+                         std::uint32_t(tex.rgba8[i + 2]) << 16 | std::uint32_t(tex.rgba8[i + 3]) << 24);
+    }
+  }
+  if (uvs.empty()) uvs.resize(1);
+  if (texels.empty()) texels.resize(1);
+  triangle_uvs_ = make_buffer("scene.triangle_uvs", uvs.size() * sizeof(GpuTriangleUv));
+  texels_ = make_buffer("scene.texels", texels.size() * 4);
+  device_.upload_buffer(triangle_uvs_, 0, bytes_of(uvs));
+  device_.upload_buffer(texels_, 0, bytes_of(texels));
 }
 
 hal::BufferHandle SceneGpu::make_buffer(const char* name, std::uint64_t bytes, hal::BufferUsage extra) {
@@ -148,7 +186,8 @@ bool SceneGpu::update(float frame) {
   std::vector<hal::Barrier> to_read = {{triangles_, hal::State::CopyDst, hal::State::ShaderRead},
                                        {previous_triangles_, hal::State::CopyDst, hal::State::ShaderRead}};
   if (!lights.empty()) to_read.push_back({lights_, hal::State::CopyDst, hal::State::ShaderRead});
-  if (first_) to_read.push_back({materials_, hal::State::CopyDst, hal::State::ShaderRead});
+  if (first_)
+    for (auto b : {materials_, triangle_uvs_, texels_}) to_read.push_back({b, hal::State::CopyDst, hal::State::ShaderRead});
   if (moved && ray_query_) {
     std::vector<glm::vec3> positions;
     std::vector<std::uint32_t> indices;

@@ -23,8 +23,18 @@ struct GpuTriangle {
   std::uint32_t primitive;  // triangle index within its mesh
 };
 struct GpuMaterial {
-  glm::vec4 albedo;    // rgb, a unused
+  glm::vec4 albedo;    // rgb, a = albedo texture index + 1 (0: untextured)
   glm::vec4 emission;  // rgb radiance, a = 1 when emissive
+};
+// Texture coordinates of a triangle's corners (zeros for meshes without uvs).
+struct GpuTriangleUv {
+  glm::vec2 uv0, uv1, uv2;
+  glm::vec2 pad{0.0f};
+};
+// The texel buffer starts with one of these per texture (4 uints each), then the texels: RGBA8
+// sRGB, one uint per texel, row-major. One buffer, not two: WebGPU allows 8 storage buffers a stage.
+struct GpuTexture {
+  std::uint32_t offset, width, height, pad;  // offset: in uints from the buffer's start
 };
 struct GpuLight {
   glm::vec3 position;       // sphere centre
@@ -38,6 +48,7 @@ struct GpuLight {
   std::uint32_t pad0 = 0, pad1 = 0;
 };
 static_assert(sizeof(GpuTriangle) == 48 && sizeof(GpuMaterial) == 32 && sizeof(GpuLight) == 64);
+static_assert(sizeof(GpuTriangleUv) == 32 && sizeof(GpuTexture) == 16);
 
 // Camera as the shaders use it: a primary ray through pixel p is
 // normalize(forward + ((2(p.x+0.5)/w) - 1) * right + (1 - 2(p.y+0.5)/h) * up).
@@ -78,11 +89,17 @@ class SceneGpu {
   hal::BufferHandle bvh_nodes() const { return bvh_nodes_; }
   hal::BufferHandle bvh_triangles() const { return bvh_triangles_; }
   hal::AccelHandle tlas() const { return tlas_; }  // none in the software variant
+  // Albedo textures: per-triangle uvs, and the texture table followed by the texels. Untextured
+  // scenes get one-element placeholders, and their shaders never read them.
+  hal::BufferHandle triangle_uvs() const { return triangle_uvs_; }
+  hal::BufferHandle texels() const { return texels_; }
+  bool textured() const { return textured_; }
 
  private:
   std::vector<GpuTriangle> world_triangles(const scene::FrameState& state) const;
   std::vector<GpuLight> gpu_lights(const scene::FrameState& state, const scene::FrameState& previous,
                                    const std::vector<GpuTriangle>& triangles) const;
+  void upload_textures();
   hal::BufferHandle make_buffer(const char* name, std::uint64_t bytes, hal::BufferUsage extra = hal::BufferUsage::None);
 
   hal::Device& device_;
@@ -95,6 +112,8 @@ class SceneGpu {
   Bvh bvh_;
   hal::BufferHandle triangles_, previous_triangles_, materials_, lights_, bvh_nodes_, bvh_triangles_;
   hal::BufferHandle accel_positions_, accel_indices_;
+  hal::BufferHandle triangle_uvs_, texels_;
+  bool textured_ = false;
   hal::AccelHandle blas_, tlas_;
   std::vector<hal::Resource> owned_;
 };

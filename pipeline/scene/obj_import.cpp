@@ -107,7 +107,8 @@ ImportedMesh import_obj(const std::filesystem::path& file, const std::string& wh
           glm::vec2 uv(0.0f);
           if (idx.texcoord_index >= 0) {
             const auto t = static_cast<std::size_t>(idx.texcoord_index);
-            uv = {attrib.texcoords[2 * t], attrib.texcoords[2 * t + 1]};
+            // OBJ's v grows upwards; the scene's (glTF's) downwards from the image's top row.
+            uv = {attrib.texcoords[2 * t], 1.0f - attrib.texcoords[2 * t + 1]};
             any_uv = true;
           }
           it = remap.emplace(key, static_cast<std::uint32_t>(out.mesh.positions.size())).first;

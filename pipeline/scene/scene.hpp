@@ -35,7 +35,7 @@ struct Material {
 struct Mesh {
   std::string name;
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec2> uvs;               // empty, or one per position
+  std::vector<glm::vec2> uvs;               // empty, or one per position; v = 0 is the texture's top row
   std::vector<std::uint32_t> indices;       // three per triangle
   std::vector<std::uint32_t> materials;     // one material index per triangle
   std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(indices.size() / 3); }

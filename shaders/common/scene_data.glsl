@@ -30,6 +30,18 @@ struct Light {
   uint pad1;
 };
 
+struct TriangleUv {
+  vec2 uv0;
+  vec2 uv1;
+  vec2 uv2;
+  vec2 pad;
+};
+
+// The sRGB transfer function, inverted (IEC 61966-2-1).
+vec3 srgb_to_linear(vec3 c) {
+  return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c));
+}
+
 struct BvhNode {
   vec3 bmin;
   uint first;

@@ -19,7 +19,7 @@ layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D gradient_prev;  
 void main() {
   ivec2 s = ivec2(gl_GlobalInvocationID.xy);
   if (s.x >= int(params.strata_width) || s.y >= int(params.strata_height)) return;
-  claims.values[s.y * int(params.strata_width) + s.x] = 0u;
+  claims.values[s.y * int(params.strata_width) + s.x] = 0xFFFFFFFFu;  // no bid yet
   imageStore(gradient_prev, s, vec4(0.0, -1.0, 0.0, 0.0));
   for (int k = 0; k < 9; ++k) {
     ivec2 p = 3 * s + ivec2(k % 3, k / 3);

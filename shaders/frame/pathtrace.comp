@@ -146,7 +146,6 @@ vec3 trace_path(vec3 x, vec3 n, uint tri, vec3 albedo, vec3 emission, inout uint
     if (!h.hit) break;
     Triangle t = load_triangle(h.triangle);
     Material m;
-    m.albedo = materials.values[t.material].albedo;
     m.emission = materials.values[t.material].emission;
     if (m.emission.a > 0.0) {
       float pdf_light = emissive_triangle_pdf(h.triangle, o, dir, h.t);
@@ -156,7 +155,7 @@ vec3 trace_path(vec3 x, vec3 n, uint tri, vec3 albedo, vec3 emission, inout uint
     n = triangle_normal(t);
     if (dot(n, dir) > 0.0) n = -n;
     tri = h.triangle;
-    albedo = m.albedo.rgb;
+    albedo = surface_albedo(h.triangle, h.bary);
     // Russian roulette after two bounces, by the throughput's largest component.
     if (bounce >= 1u) {
       float q = min(0.95, max(throughput.r, max(throughput.g, throughput.b)));
@@ -192,7 +191,7 @@ void main() {
     vec3 x = t.p0 * (1.0 - b.x - b.y) + t.p1 * b.x + t.p2 * b.y;
     vec3 n = triangle_normal(t);
     if (dot(n, x - cam.position.xyz) > 0.0) n = -n;
-    albedo = materials.values[t.material].albedo.rgb;
+    albedo = surface_albedo(vis.y, b);
     vec3 emission = materials.values[t.material].emission.rgb;
     for (uint s = 0u; s < params.spp; ++s) {
       uint state = s == 0u ? seed : pcg_hash(seed + s);

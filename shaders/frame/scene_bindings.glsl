@@ -15,6 +15,9 @@ layout(set = 0, binding = 2, std430) readonly buffer BvhTriangles { uint values[
 layout(set = 0, binding = 3, std430) readonly buffer Triangles { Triangle values[]; } triangles;
 layout(set = 0, binding = 4, std430) readonly buffer Materials { Material values[]; } materials;
 layout(set = 0, binding = 5, std430) readonly buffer Lights { Light values[]; } lights;
+layout(set = 0, binding = 7, std430) readonly buffer TriangleUvs { TriangleUv values[]; } triangle_uvs;
+// The texture table (4 uints per texture: offset, width, height, 0), then the texels.
+layout(set = 0, binding = 9, std430) readonly buffer Texels { uint values[]; } texels;
 
 // Field-by-field loads: a whole-struct copy out of a buffer becomes OpCopyLogical, which naga
 // (the WGSL step) cannot translate.
@@ -42,6 +45,24 @@ Light load_light(uint i) {
   l.pad0 = 0u;
   l.pad1 = 0u;
   return l;
+}
+
+// Diffuse albedo at a point of a triangle: the material's, times its texture when it has one
+// (nearest texel, repeating; untextured materials fetch nothing).
+vec3 surface_albedo(uint tri, vec2 bary) {
+  uint material = triangles.values[tri].material;
+  vec4 a = materials.values[material].albedo;
+  if (a.w < 0.5) return a.rgb;
+  uint tex = uint(a.w + 0.5) - 1u;
+  vec2 uv = triangle_uvs.values[tri].uv0 * (1.0 - bary.x - bary.y) + triangle_uvs.values[tri].uv1 * bary.x +
+            triangle_uvs.values[tri].uv2 * bary.y;
+  uint offset = texels.values[4u * tex];
+  uint w = texels.values[4u * tex + 1u];
+  uint h = texels.values[4u * tex + 2u];
+  vec2 f = fract(uv);
+  uvec2 t = min(uvec2(f * vec2(float(w), float(h))), uvec2(w - 1u, h - 1u));
+  vec3 srgb = unpackUnorm4x8(texels.values[offset + t.y * w + t.x]).rgb;
+  return a.rgb * srgb_to_linear(srgb);
 }
 
 #include "common/trace.glsl"

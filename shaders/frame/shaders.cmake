@@ -8,5 +8,6 @@ asvgf_add_shader(pathtrace SOURCE frame/pathtrace.comp
                           software_gradients=TRACE_SOFTWARE,GRADIENT_SAMPLES)
 asvgf_add_shader(gradient_clear SOURCE frame/gradient_clear.comp)
 asvgf_add_shader(gradient_select SOURCE frame/gradient_select.comp)
+asvgf_add_shader(gradient_resolve SOURCE frame/gradient_resolve.comp)
 asvgf_add_shader(accumulate SOURCE frame/accumulate.comp)
 asvgf_add_shader(debug_view SOURCE frame/debug_view.comp)

@@ -21,7 +21,7 @@ namespace passes = asvgf::passes;
 
 namespace {
 
-constexpr std::uint32_t kW = 32, kH = 24;
+constexpr int kW = 32, kH = 24;
 
 ImageD to_image(const std::vector<float>& values) {
   ImageD img(kW, kH, 4);

@@ -2,6 +2,7 @@
 // history ping-pong, compile errors, and the real A-SVGF frame of every method.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "frame/frame_graph.hpp"
@@ -53,7 +54,7 @@ struct Scene {
 // Starts at `first` (light-exit moves from frame 4 on).
 void run_frames(Scene& scene, frame::FrameSettings settings, int frames,
                 const std::function<void(graph::RenderGraph&)>& mutate = {}, int first = 0,
-                bool binding_checks = true) {
+                bool binding_checks = true, std::vector<std::string>* culled = nullptr) {
   graph::GraphRuntime runtime(scene.device);
   runtime.set_binding_checks(binding_checks);
   frame::FrameGraphBuilder builder(scene.device);
@@ -64,6 +65,10 @@ void run_frames(Scene& scene, frame::FrameSettings settings, int frames,
     auto g = builder.build(settings, scene.gpu, scene.targets(settings.width, settings.height));
     if (mutate) mutate(g);
     auto compiled = runtime.compile(g);
+    if (culled) {
+      culled->clear();
+      for (const auto& c : compiled.culled) culled->push_back(c.name);
+    }
     runtime.execute(compiled, *cmd);
     scene.device.submit(*cmd);
     cmd->reset();
@@ -104,10 +109,12 @@ TEST_CASE("every method's frame compiles and runs 4 frames on the recording HAL 
 
 // Runs the light-exit frames 4..6 (the light moves: every asvgf pass runs) with one declared
 // access of one pass deleted, and says who caught it.
-enum class Caught { Compile, Execute, RecordingHal, Nothing };
+// Culled: the pass wrote nothing else, so the graph left it out (dump() lists it with the reason).
+enum class Caught { Compile, Execute, RecordingHal, Culled, Nothing };
 Caught delete_one_access(const frame::FrameSettings& s, const std::string& pass, const graph::Access& access,
                          bool binding_checks) {
   Scene scene;
+  std::vector<std::string> culled;
   try {
     run_frames(
         scene, s, 3,
@@ -121,11 +128,12 @@ Caught delete_one_access(const frame::FrameSettings& s, const std::string& pass,
               }
           }
         },
-        4, binding_checks);
+        4, binding_checks, &culled);
   } catch (const graph::GraphError& e) {
     return std::string(e.what()).find("does not declare") != std::string::npos ? Caught::Execute : Caught::Compile;
   }
-  return scene.device.reports().empty() ? Caught::Nothing : Caught::RecordingHal;
+  if (!scene.device.reports().empty()) return Caught::RecordingHal;
+  return std::find(culled.begin(), culled.end(), pass) != culled.end() ? Caught::Culled : Caught::Nothing;
 }
 
 struct Mutation {
@@ -158,7 +166,7 @@ frame::FrameSettings small_asvgf() {
 
 TEST_CASE("deleting any one declared access of an asvgf pass is caught by the graph or the recording HAL") {
   const auto s = small_asvgf();
-  int by[4] = {0, 0, 0, 0};
+  int by[5] = {0, 0, 0, 0, 0};
   for (const auto& m : asvgf_mutations(s)) {
     CAPTURE(m.pass);
     CAPTURE(m.resource);
@@ -168,7 +176,7 @@ TEST_CASE("deleting any one declared access of an asvgf pass is caught by the gr
     ++by[static_cast<int>(c)];
   }
   MESSAGE(by[0] << " refused at compile, " << by[1] << " at execute (bound but undeclared), " << by[2]
-                << " reported by the recording HAL");
+                << " reported by the recording HAL, " << by[3] << " culled the pass (its only write deleted)");
 }
 
 TEST_CASE("without the graph's binding check, the recording HAL catches every deleted write on its own") {
@@ -205,7 +213,8 @@ TEST_CASE("culling: an output nobody reads culls its pass, a still frame culls t
   for (const auto& c : compiled.culled) culled[c.name] = c.reason;
   CHECK(culled.count("debug_view") == 1);
   CHECK(culled["debug_view"].find("nothing that contributes") != std::string::npos);
-  for (const char* name : {"gradient_clear", "gradient_select", "gradient", "gradient_atrous.1", "gradient_atrous.3"}) {
+  for (const char* name :
+       {"gradient_clear", "gradient_select", "gradient_resolve", "gradient", "gradient_atrous.1", "gradient_atrous.3"}) {
     CAPTURE(name);
     REQUIRE(culled.count(name) == 1);
     CHECK(culled[name].find("nothing in the scene, camera or lights moved") != std::string::npos);

@@ -1,0 +1,56 @@
+// frame/gradient_projection.glsl: A-SVGF forward projection of one of last frame's samples, shared
+// by gradient_select (which claims strata) and gradient_resolve (which writes for the winners), so
+// that both compute exactly the same thing.
+#ifndef ASVGF_FRAME_GRADIENT_PROJECTION_GLSL
+#define ASVGF_FRAME_GRADIENT_PROJECTION_GLSL
+
+#include "common/random.glsl"
+#include "common/scene_data.glsl"
+
+// Needs: params (width, height, strata_width, frame, camera), `triangles` (this frame's),
+// `prev_visibility`, `depth_normal` (this frame's), and a global `Camera cam` loaded from params.
+
+struct Projection {
+  bool ok;
+  ivec2 from;  // last frame's pixel
+  ivec2 to;    // this frame's pixel showing the same surface point
+  uvec4 vis;   // last frame's visibility of it (triangle and barycentrics)
+};
+
+// The pixel last frame's stratum `s` contributes (one of its 9, by a hash of stratum and frame),
+// and where its surface point lands now if the surface there is the same. Written as straight-line
+// code with one exit: naga (the WGSL step) mistranslates early returns out of this once inlined.
+Projection project_sample(ivec2 s) {
+  Projection r;
+  uint pick = pcg_hash(uint(s.y) * params.strata_width + uint(s.x) + pcg_hash(params.frame)) % 9u;
+  r.from = 3 * s + ivec2(int(pick % 3u), int(pick / 3u));
+  bool ok = r.from.x < int(params.width) && r.from.y < int(params.height);
+  uvec4 vis = texelFetch(prev_visibility, min(r.from, ivec2(int(params.width) - 1, int(params.height) - 1)), 0);
+  ok = ok && vis.x != 0u && vis.x != 0xFFFFFFFFu;  // nothing, or a light: no shading to compare
+  r.vis = vis;
+
+  uint tri = ok ? vis.y : 0u;
+  vec3 p0 = triangles.values[tri].p0;
+  vec3 p1 = triangles.values[tri].p1;
+  vec3 p2 = triangles.values[tri].p2;
+  vec2 b = vec2(uintBitsToFloat(vis.z), uintBitsToFloat(vis.w));
+  vec3 x = p0 * (1.0 - b.x - b.y) + p1 * b.x + p2 * b.y;
+  vec3 c = cross(p1 - p0, p2 - p0);
+  float area2 = dot(c, c);
+  ok = ok && area2 > 0.0;  // degenerate now: no normal to test against
+  vec3 n = c * inversesqrt(max(area2, 1e-30));
+  n = dot(n, x - cam.position.xyz) > 0.0 ? -n : n;
+
+  vec3 q3 = camera_project(cam, x, params.width, params.height);
+  ivec2 q = ivec2(floor(q3.xy));
+  ok = ok && q3.z > 0.0 && q.x >= 0 && q.y >= 0 && q.x < int(params.width) && q.y < int(params.height);
+  vec4 dn = texelFetch(depth_normal, clamp(q, ivec2(0), ivec2(int(params.width) - 1, int(params.height) - 1)), 0);
+  // The same surface: depth within a few pixels' worth of depth gradient, normals aligned.
+  float tolerance = max(1e-3 * dn.x, 4.0 * dn.y);
+  ok = ok && dn.x > 0.0 && abs(q3.z - dn.x) <= tolerance && dot(decode_normal(dn.zw), n) >= 0.9;
+  r.ok = ok;
+  r.to = q;
+  return r;
+}
+
+#endif
