@@ -34,6 +34,18 @@ void transfer_to_host(VkCommandBuffer cmd) {
   vkCmdPipelineBarrier2(cmd, &info);
 }
 
+// Releases a staging buffer when the transfer using it ends, normally or by an exception.
+struct StagingRelease {
+  VkDevice device;
+  MemoryAllocator& allocator;
+  VkBuffer buffer;
+  Allocation memory;
+  ~StagingRelease() {
+    vkDestroyBuffer(device, buffer, nullptr);
+    allocator.free(memory);
+  }
+};
+
 }  // namespace
 
 std::pair<VkBuffer, Allocation> VulkanDevice::create_staging(VkDeviceSize size, MemoryUse use, std::string_view object) {
@@ -69,20 +81,13 @@ void VulkanDevice::upload_buffer(BufferHandle dst, std::uint64_t offset, std::sp
                     " runs past the end of the " + std::to_string(b.desc.size) + "-byte buffer");
   if (data.empty()) return;
   auto [staging, memory] = create_staging(data.size(), MemoryUse::Upload, b.name);
+  const StagingRelease release{device_, *allocator_, staging, memory};
   std::memcpy(memory.mapped, data.data(), data.size());
-  try {
-    run_now(b.name, [&, staging = staging](VkCommandBuffer cmd) {
-      before_transfer(cmd);
-      const VkBufferCopy region{0, offset, data.size()};
-      vkCmdCopyBuffer(cmd, staging, b.buffer, 1, &region);
-    });
-  } catch (...) {
-    vkDestroyBuffer(device_, staging, nullptr);
-    allocator_->free(memory);
-    throw;
-  }
-  vkDestroyBuffer(device_, staging, nullptr);
-  allocator_->free(memory);
+  run_now(b.name, [&, staging = staging](VkCommandBuffer cmd) {
+    before_transfer(cmd);
+    const VkBufferCopy region{0, offset, data.size()};
+    vkCmdCopyBuffer(cmd, staging, b.buffer, 1, &region);
+  });
 }
 
 void VulkanDevice::read_buffer(BufferHandle src, std::uint64_t offset, std::span<std::byte> out) {
@@ -96,21 +101,14 @@ void VulkanDevice::read_buffer(BufferHandle src, std::uint64_t offset, std::span
                     " runs past the end of the " + std::to_string(b.desc.size) + "-byte buffer");
   if (out.empty()) return;
   auto [staging, memory] = create_staging(out.size(), MemoryUse::Readback, b.name);
-  try {
-    run_now(b.name, [&, staging = staging](VkCommandBuffer cmd) {
-      before_transfer(cmd);
-      const VkBufferCopy region{offset, 0, out.size()};
-      vkCmdCopyBuffer(cmd, b.buffer, staging, 1, &region);
-      transfer_to_host(cmd);
-    });
-    std::memcpy(out.data(), memory.mapped, out.size());
-  } catch (...) {
-    vkDestroyBuffer(device_, staging, nullptr);
-    allocator_->free(memory);
-    throw;
-  }
-  vkDestroyBuffer(device_, staging, nullptr);
-  allocator_->free(memory);
+  const StagingRelease release{device_, *allocator_, staging, memory};
+  run_now(b.name, [&, staging = staging](VkCommandBuffer cmd) {
+    before_transfer(cmd);
+    const VkBufferCopy region{offset, 0, out.size()};
+    vkCmdCopyBuffer(cmd, b.buffer, staging, 1, &region);
+    transfer_to_host(cmd);
+  });
+  std::memcpy(out.data(), memory.mapped, out.size());
 }
 
 void VulkanDevice::upload_image(ImageHandle dst, std::span<const std::byte> data) {
@@ -123,36 +121,29 @@ void VulkanDevice::upload_image(ImageHandle dst, std::span<const std::byte> data
     throw Error(ErrorKind::InvalidUsage, i.name,
                 "upload_image got " + std::to_string(data.size()) + " bytes; the image holds " + std::to_string(bytes));
   auto [staging, memory] = create_staging(bytes, MemoryUse::Upload, i.name);
+  const StagingRelease release{device_, *allocator_, staging, memory};
   std::memcpy(memory.mapped, data.data(), bytes);
-  try {
-    run_now(i.name, [&, staging = staging](VkCommandBuffer cmd) {
-      // The whole image is overwritten, so its previous layout and contents do not matter.
-      VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-      barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-      barrier.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
-      barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-      barrier.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-      barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-      barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-      barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      barrier.image = i.image;
-      barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-      VkDependencyInfo info{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-      info.imageMemoryBarrierCount = 1;
-      info.pImageMemoryBarriers = &barrier;
-      vkCmdPipelineBarrier2(cmd, &info);
-      VkBufferImageCopy region{};
-      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-      region.imageExtent = {i.desc.width, i.desc.height, 1};
-      vkCmdCopyBufferToImage(cmd, staging, i.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    });
-  } catch (...) {
-    vkDestroyBuffer(device_, staging, nullptr);
-    allocator_->free(memory);
-    throw;
-  }
-  vkDestroyBuffer(device_, staging, nullptr);
-  allocator_->free(memory);
+  run_now(i.name, [&, staging = staging](VkCommandBuffer cmd) {
+    // The whole image is overwritten, so its previous layout and contents do not matter.
+    VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    barrier.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
+    barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+    barrier.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = i.image;
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VkDependencyInfo info{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    info.imageMemoryBarrierCount = 1;
+    info.pImageMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cmd, &info);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {i.desc.width, i.desc.height, 1};
+    vkCmdCopyBufferToImage(cmd, staging, i.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  });
 }
 
 void VulkanDevice::read_image(ImageHandle src, std::span<std::byte> out) {
@@ -166,23 +157,16 @@ void VulkanDevice::read_image(ImageHandle src, std::span<std::byte> out) {
                 "read_image got room for " + std::to_string(out.size()) + " bytes; the image holds " +
                     std::to_string(bytes));
   auto [staging, memory] = create_staging(bytes, MemoryUse::Readback, i.name);
-  try {
-    run_now(i.name, [&, staging = staging](VkCommandBuffer cmd) {
-      before_transfer(cmd);
-      VkBufferImageCopy region{};
-      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-      region.imageExtent = {i.desc.width, i.desc.height, 1};
-      vkCmdCopyImageToBuffer(cmd, i.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging, 1, &region);
-      transfer_to_host(cmd);
-    });
-    std::memcpy(out.data(), memory.mapped, bytes);
-  } catch (...) {
-    vkDestroyBuffer(device_, staging, nullptr);
-    allocator_->free(memory);
-    throw;
-  }
-  vkDestroyBuffer(device_, staging, nullptr);
-  allocator_->free(memory);
+  const StagingRelease release{device_, *allocator_, staging, memory};
+  run_now(i.name, [&, staging = staging](VkCommandBuffer cmd) {
+    before_transfer(cmd);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {i.desc.width, i.desc.height, 1};
+    vkCmdCopyImageToBuffer(cmd, i.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging, 1, &region);
+    transfer_to_host(cmd);
+  });
+  std::memcpy(out.data(), memory.mapped, bytes);
 }
 
 }  // namespace hal::vulkan
