@@ -1,4 +1,4 @@
-// Acceleration structures: BLAS from triangle buffers, TLAS from instances copied at record time,
+// Acceleration structures: BLAS from triangle or box buffers, TLAS from instances copied at record time,
 // builds and in-place updates, each structure owning its scratch buffer.
 #include <cstring>
 #include <string>
@@ -25,6 +25,21 @@ VkAccelerationStructureGeometryKHR triangles(VkDeviceAddress vertices, std::uint
   t.indexType = VK_INDEX_TYPE_UINT32;
   t.indexData.deviceAddress = indices;
   return geometry;
+}
+
+VkAccelerationStructureGeometryKHR boxes(VkDeviceAddress data) {
+  VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+  geometry.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
+  geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;  // the shader decides every hit; no any-hit stage
+  geometry.geometry.aabbs.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
+  geometry.geometry.aabbs.data.deviceAddress = data;
+  geometry.geometry.aabbs.stride = sizeof(VkAabbPositionsKHR);
+  return geometry;
+}
+
+VkAccelerationStructureGeometryKHR blas_geometry(const BlasDesc& desc, VkDeviceAddress vertices, VkDeviceAddress indices,
+                                                 VkDeviceAddress box_data) {
+  return desc.geometry == BlasGeometry::Boxes ? boxes(box_data) : triangles(vertices, desc.vertex_count, indices);
 }
 
 VkAccelerationStructureGeometryKHR instances(VkDeviceAddress data) {
@@ -108,34 +123,47 @@ AccelHandle VulkanDevice::create_blas(const BlasDesc& desc) {
   check_alive();
   if (!capabilities().acceleration_structures)
     throw Error(ErrorKind::Unsupported, desc.name, "acceleration structures are not supported by " + adapter().name);
-  if (desc.vertex_count == 0 || desc.triangle_count == 0)
-    throw Error(ErrorKind::InvalidDescriptor, desc.name,
-                "BLAS needs at least one vertex and one triangle (got " + std::to_string(desc.vertex_count) +
-                    " vertices, " + std::to_string(desc.triangle_count) + " triangles)");
-  const BufferObject& vertices = buffers.get(desc.vertices.id, "buffer");
-  const BufferObject& indices = buffers.get(desc.indices.id, "buffer");
-  for (const BufferObject* b : {&vertices, &indices})
+  std::vector<const BufferObject*> inputs;
+  if (desc.geometry == BlasGeometry::Boxes) {
+    if (desc.box_count == 0) throw Error(ErrorKind::InvalidDescriptor, desc.name, "BLAS of boxes needs at least one box");
+    const BufferObject& box_buffer = buffers.get(desc.boxes.id, "buffer");
+    if (box_buffer.desc.size < std::uint64_t{desc.box_count} * sizeof(VkAabbPositionsKHR))
+      throw Error(ErrorKind::InvalidDescriptor, desc.name,
+                  "box buffer '" + box_buffer.name + "' is smaller than " + std::to_string(desc.box_count) +
+                      " boxes of 24 bytes");
+    inputs.push_back(&box_buffer);
+  } else {
+    if (desc.vertex_count == 0 || desc.triangle_count == 0)
+      throw Error(ErrorKind::InvalidDescriptor, desc.name,
+                  "BLAS needs at least one vertex and one triangle (got " + std::to_string(desc.vertex_count) +
+                      " vertices, " + std::to_string(desc.triangle_count) + " triangles)");
+    const BufferObject& vertices = buffers.get(desc.vertices.id, "buffer");
+    const BufferObject& indices = buffers.get(desc.indices.id, "buffer");
+    if (vertices.desc.size < std::uint64_t{desc.vertex_count} * 12)
+      throw Error(ErrorKind::InvalidDescriptor, desc.name,
+                  "vertex buffer '" + vertices.name + "' is smaller than " + std::to_string(desc.vertex_count) +
+                      " float3");
+    if (indices.desc.size < std::uint64_t{desc.triangle_count} * 12)
+      throw Error(ErrorKind::InvalidDescriptor, desc.name,
+                  "index buffer '" + indices.name + "' is smaller than " + std::to_string(desc.triangle_count) +
+                      " triangles of uint32");
+    inputs = {&vertices, &indices};
+  }
+  for (const BufferObject* b : inputs)
     if (!has(b->desc.usage, BufferUsage::AccelBuildInput))
       throw Error(ErrorKind::InvalidUsage, b->name, "BLAS '" + desc.name + "' input needs AccelBuildInput usage");
-  if (vertices.desc.size < std::uint64_t{desc.vertex_count} * 12)
-    throw Error(ErrorKind::InvalidDescriptor, desc.name,
-                "vertex buffer '" + vertices.name + "' is smaller than " + std::to_string(desc.vertex_count) + " float3");
-  if (indices.desc.size < std::uint64_t{desc.triangle_count} * 12)
-    throw Error(ErrorKind::InvalidDescriptor, desc.name,
-                "index buffer '" + indices.name + "' is smaller than " + std::to_string(desc.triangle_count) +
-                    " triangles of uint32");
 
   AccelObject object;
   object.name = desc.name;
   object.blas = desc;
-  const auto geometry = triangles(0, desc.vertex_count, 0);
+  const auto geometry = blas_geometry(desc, 0, 0, 0);
   VkAccelerationStructureBuildGeometryInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
   info.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
   info.flags = build_flags(desc.allow_update);
   info.geometryCount = 1;
   info.pGeometries = &geometry;
   try {
-    create_storage(*this, object, info, desc.triangle_count);
+    create_storage(*this, object, info, desc.primitive_count());
   } catch (...) {
     destroy_accel(object);
     throw;
@@ -201,9 +229,9 @@ void VulkanCommandList::build_blas(AccelHandle handle, bool update) {
     throw Error(ErrorKind::InvalidUsage, object.name, "update requested but the BLAS was created without allow_update");
   if (update && !object.recorded_build)
     throw Error(ErrorKind::InvalidUsage, object.name, "update requested before any build was recorded");
-  const BufferObject& vertices = device_.buffers.get(object.blas.vertices.id, "buffer");
-  const BufferObject& indices = device_.buffers.get(object.blas.indices.id, "buffer");
-  const auto geometry = triangles(vertices.address, object.blas.vertex_count, indices.address);
+  const BlasDesc& desc = object.blas;
+  auto address = [&](BufferHandle b) { return b ? device_.buffers.get(b.id, "buffer").address : VkDeviceAddress{0}; };
+  const auto geometry = blas_geometry(desc, address(desc.vertices), address(desc.indices), address(desc.boxes));
   VkAccelerationStructureBuildGeometryInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
   info.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
   info.flags = build_flags(object.blas.allow_update);
@@ -213,7 +241,7 @@ void VulkanCommandList::build_blas(AccelHandle handle, bool update) {
   info.geometryCount = 1;
   info.pGeometries = &geometry;
   info.scratchData.deviceAddress = object.scratch_address;
-  VkAccelerationStructureBuildRangeInfoKHR range{object.blas.triangle_count, 0, 0, 0};
+  VkAccelerationStructureBuildRangeInfoKHR range{desc.primitive_count(), 0, 0, 0};
   const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
   scratch_barrier(object.scratch);
   device_.fn().cmd_build_accel(cmd, 1, &info, &ranges);

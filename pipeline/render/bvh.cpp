@@ -4,6 +4,7 @@
 #include "render/bvh.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace asvgf::render {
@@ -121,13 +122,28 @@ struct Builder {
 
 }  // namespace
 
+std::vector<TriangleBox> padded_triangle_boxes(std::span<const glm::vec3> triangle_vertices) {
+  float largest = 0.0f;
+  for (const glm::vec3& p : triangle_vertices) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  // The floor keeps boxes of a scene at the origin from being flat.
+  const glm::vec3 margin(std::max(largest * 0x1p-12f, 1e-30f));
+  std::vector<TriangleBox> boxes(triangle_vertices.size() / 3);
+  for (std::size_t t = 0; t < boxes.size(); ++t) {
+    const glm::vec3 &a = triangle_vertices[3 * t], &b = triangle_vertices[3 * t + 1], &c = triangle_vertices[3 * t + 2];
+    boxes[t].min = glm::min(glm::min(a, b), c) - margin;
+    boxes[t].max = glm::max(glm::max(a, b), c) + margin;
+  }
+  return boxes;
+}
+
 Bvh build_bvh(std::span<const glm::vec3> triangle_vertices, const BvhOptions& options) {
   Builder b{triangle_vertices, options, {}, {}, {}};
   const auto n = static_cast<std::uint32_t>(triangle_vertices.size() / 3);
   b.boxes.resize(n);
   b.centroids.resize(n);
+  const std::vector<TriangleBox> padded = padded_triangle_boxes(triangle_vertices);
   for (std::uint32_t t = 0; t < n; ++t) {
-    for (int k = 0; k < 3; ++k) b.boxes[t].grow(triangle_vertices[3 * t + k]);
+    b.boxes[t] = Box{padded[t].min, padded[t].max};
     b.centroids[t] = (b.boxes[t].min + b.boxes[t].max) * 0.5f;
   }
   b.bvh.triangles.resize(n);

@@ -62,11 +62,10 @@ SceneGpu::SceneGpu(hal::Device& device, const scene::Scene& scene, bool ray_quer
   }
   lights_ = make_buffer("scene.lights", std::max<std::uint64_t>(1, light_count_) * sizeof(GpuLight));
   if (ray_query_) {
-    accel_positions_ = make_buffer("scene.accel_positions", std::uint64_t(triangle_count_) * 36,
-                                   hal::BufferUsage::AccelBuildInput);
-    accel_indices_ = make_buffer("scene.accel_indices", std::uint64_t(triangle_count_) * 12,
-                                 hal::BufferUsage::AccelBuildInput);
-    blas_ = device.create_blas({"scene.blas", accel_positions_, 3 * triangle_count_, accel_indices_, triangle_count_});
+    // Boxes, not triangles: the shader's own triangle test decides hits (shaders/common/trace.glsl).
+    accel_boxes_ = make_buffer("scene.accel_boxes", std::uint64_t(triangle_count_) * sizeof(TriangleBox),
+                               hal::BufferUsage::AccelBuildInput);
+    blas_ = device.create_blas(hal::BlasDesc::of_boxes("scene.blas", accel_boxes_, triangle_count_));
     tlas_ = device.create_tlas({"scene.tlas", 1});
   } else {
     // Sized for the worst case of 2n-1 nodes so that rebuilds never reallocate.
@@ -188,20 +187,15 @@ bool SceneGpu::update(float frame) {
   if (!lights.empty()) to_read.push_back({lights_, hal::State::CopyDst, hal::State::ShaderRead});
   if (first_)
     for (auto b : {materials_, triangle_uvs_, texels_}) to_read.push_back({b, hal::State::CopyDst, hal::State::ShaderRead});
+  std::vector<glm::vec3> corners;
+  if (moved) {
+    corners.reserve(3 * triangles.size());
+    for (const auto& t : triangles) corners.insert(corners.end(), {t.p0, t.p1, t.p2});
+  }
   if (moved && ray_query_) {
-    std::vector<glm::vec3> positions;
-    std::vector<std::uint32_t> indices;
-    for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-      positions.push_back(triangles[t].p0);
-      positions.push_back(triangles[t].p1);
-      positions.push_back(triangles[t].p2);
-      for (std::uint32_t k = 0; k < 3; ++k) indices.push_back(3 * t + k);
-    }
-    device_.upload_buffer(accel_positions_, 0, bytes_of(positions));
-    device_.upload_buffer(accel_indices_, 0, bytes_of(indices));
+    device_.upload_buffer(accel_boxes_, 0, bytes_of(padded_triangle_boxes(corners)));
     const hal::State accel_state = first_ ? hal::State::Undefined : hal::State::AccelRead;
-    commands->barrier({{accel_positions_, hal::State::CopyDst, hal::State::AccelBuildInput},
-                       {accel_indices_, hal::State::CopyDst, hal::State::AccelBuildInput},
+    commands->barrier({{accel_boxes_, hal::State::CopyDst, hal::State::AccelBuildInput},
                        {blas_, accel_state, hal::State::AccelWrite}});
     commands->build_blas(blas_, false);
     commands->barrier({{blas_, hal::State::AccelWrite, hal::State::AccelRead}, {tlas_, accel_state, hal::State::AccelWrite}});
@@ -209,9 +203,6 @@ bool SceneGpu::update(float frame) {
     commands->build_tlas(tlas_, std::span(&instance, 1), false);
     commands->barrier({tlas_, hal::State::AccelWrite, hal::State::AccelRead});
   } else if (moved) {
-    std::vector<glm::vec3> corners;
-    corners.reserve(3 * triangles.size());
-    for (const auto& t : triangles) corners.insert(corners.end(), {t.p0, t.p1, t.p2});
     bvh_ = build_bvh(corners);
     device_.upload_buffer(bvh_nodes_, 0, bytes_of(bvh_.nodes));
     device_.upload_buffer(bvh_triangles_, 0, bytes_of(bvh_.triangles));

@@ -111,7 +111,7 @@ class SceneGpu {
   std::uint32_t triangle_count_ = 0, light_count_ = 0, sphere_light_count_ = 0;
   Bvh bvh_;
   hal::BufferHandle triangles_, previous_triangles_, materials_, lights_, bvh_nodes_, bvh_triangles_;
-  hal::BufferHandle accel_positions_, accel_indices_;
+  hal::BufferHandle accel_boxes_;
   hal::BufferHandle triangle_uvs_, texels_;
   bool textured_ = false;
   hal::AccelHandle blas_, tlas_;

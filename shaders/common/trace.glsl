@@ -1,9 +1,12 @@
 // common/trace.glsl: the one way shaders trace rays. Compiled two ways:
-//   TRACE_RAY_QUERY  GL_EXT_ray_query against `scene` (a TLAS over the world-space triangles);
+//   TRACE_RAY_QUERY  GL_EXT_ray_query against `scene`: a TLAS over a BLAS of boxes, one per
+//                    triangle of `triangles` (same index), so the traversal only culls and the
+//                    triangle test below decides every hit;
 //   TRACE_SOFTWARE   a stack-based traversal of the SAH BVH in `bvh_nodes` / `bvh_triangles`.
 // The including shader declares `triangles` (world-space Triangle[]) and the variant's buffers.
-// Both variants report the closest triangle, then recompute t and the barycentrics with the same
-// ray/triangle routine, so that hits agree to the bit whenever they pick the same triangle.
+// Both variants run the same watertight triangle test over conservative candidate sets and break
+// ties in depth by the lower triangle index, so they return the same hit to the bit, even for a ray
+// through an edge two triangles share.
 #ifndef ASVGF_COMMON_TRACE_GLSL
 #define ASVGF_COMMON_TRACE_GLSL
 
@@ -18,62 +21,110 @@ struct Hit {
   vec2 bary;      // weights of p1 and p2
 };
 
-// Moller-Trumbore, two-sided. Returns (t, u, v); t < 0 when there is no hit in (tmin, tmax).
-vec3 intersect_triangle(vec3 o, vec3 d, vec3 p0, vec3 p1, vec3 p2, float tmin, float tmax) {
-  vec3 e1 = p1 - p0;
-  vec3 e2 = p2 - p0;
-  vec3 pv = cross(d, e2);
-  float det = dot(e1, pv);
-  if (det == 0.0) return vec3(-1.0);
-  float inv = 1.0 / det;
-  vec3 tv = o - p0;
-  float u = dot(tv, pv) * inv;
-  if (u < 0.0 || u > 1.0) return vec3(-1.0);
-  vec3 qv = cross(tv, e1);
-  float v = dot(d, qv) * inv;
-  if (v < 0.0 || u + v > 1.0) return vec3(-1.0);
-  float t = dot(e2, qv) * inv;
-  if (t <= tmin || t >= tmax) return vec3(-1.0);
-  return vec3(t, u, v);
-}
-
-Hit refine_hit(vec3 o, vec3 d, uint tri, float tmin, float tmax, float t_found, vec2 bary_found) {
-  Triangle t = load_triangle(tri);
-  vec3 r = intersect_triangle(o, d, t.p0, t.p1, t.p2, tmin, tmax);
-  Hit h;
-  h.hit = true;
-  h.triangle = tri;
-  h.t = r.x >= 0.0 ? r.x : t_found;
-  h.bary = r.x >= 0.0 ? r.yz : bary_found;
-  return h;
-}
-
-#ifdef TRACE_RAY_QUERY
-
-Hit trace_closest(vec3 o, vec3 d, float tmin, float tmax) {
-  rayQueryEXT rq;
-  rayQueryInitializeEXT(rq, scene, gl_RayFlagsOpaqueEXT, 0xFF, o, tmin, d, tmax);
-  while (rayQueryProceedEXT(rq)) {
-  }
+Hit no_hit(float tmax) {
   Hit h;
   h.hit = false;
   h.triangle = 0u;
   h.t = tmax;
   h.bary = vec2(0.0);
-  if (rayQueryGetIntersectionTypeEXT(rq, true) == gl_RayQueryCommittedIntersectionTriangleEXT) {
-    uint tri = uint(rayQueryGetIntersectionPrimitiveIndexEXT(rq, true));
-    h = refine_hit(o, d, tri, tmin, tmax, rayQueryGetIntersectionTEXT(rq, true),
-                   rayQueryGetIntersectionBarycentricsEXT(rq, true));
+  return h;
+}
+
+// A ray in the frame of the watertight test (Woop, Benthin and Wald, "Watertight Ray/Triangle
+// Intersection", JCGT 2(1), 2013): axes permuted so that z is the direction's largest component,
+// then sheared so that the ray runs along +z.
+struct ShearedRay {
+  vec3 o;
+  uint kz;  // which axis became z
+  vec3 shear;  // (dx/dz, dy/dz, 1/dz) after the permutation
+};
+
+// (v[kx], v[ky], v[kz]) with kx = (kz + 1) % 3, ky = (kz + 2) % 3; selects, not dynamic indexing.
+vec3 permute_axes(vec3 v, uint kz) { return kz == 0u ? v.yzx : (kz == 1u ? v.zxy : v.xyz); }
+
+ShearedRay shear_ray(vec3 o, vec3 d) {
+  vec3 a = abs(d);
+  uint kz = a.x >= a.y && a.x >= a.z ? 0u : (a.y >= a.z ? 1u : 2u);
+  vec3 dp = permute_axes(d, kz);
+  ShearedRay r;
+  r.o = o;
+  r.kz = kz;
+  r.shear = vec3(dp.x / dp.z, dp.y / dp.z, 1.0 / dp.z);
+  return r;
+}
+
+// Two-sided and watertight: a ray through an edge shared by two triangles hits at least one of
+// them (the edge functions of a shared edge are exact negatives; `precise` keeps compilers from
+// fusing them into FMAs, which would break that). Points on an edge count as inside.
+// Returns (t, weight of p1, weight of p2); t < 0 when there is no hit in (tmin, tmax).
+vec3 intersect_triangle(ShearedRay r, vec3 p0, vec3 p1, vec3 p2, float tmin, float tmax) {
+  precise vec3 a = permute_axes(p0 - r.o, r.kz);
+  precise vec3 b = permute_axes(p1 - r.o, r.kz);
+  precise vec3 c = permute_axes(p2 - r.o, r.kz);
+  precise float ax = a.x - r.shear.x * a.z;
+  precise float ay = a.y - r.shear.y * a.z;
+  precise float bx = b.x - r.shear.x * b.z;
+  precise float by = b.y - r.shear.y * b.z;
+  precise float cx = c.x - r.shear.x * c.z;
+  precise float cy = c.y - r.shear.y * c.z;
+  precise float u = cx * by - cy * bx;
+  precise float v = ax * cy - ay * cx;
+  precise float w = bx * ay - by * ax;
+  precise float det = u + v + w;
+  precise float depth = u * (r.shear.z * a.z) + v * (r.shear.z * b.z) + w * (r.shear.z * c.z);
+  float t = depth / det;
+  bool outside = (u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0);
+  bool hit = !outside && det != 0.0 && t > tmin && t < tmax;
+  return hit ? vec3(t, v / det, w / det) : vec3(-1.0);
+}
+
+vec3 intersect_triangle_index(ShearedRay r, uint tri, float tmin, float tmax) {
+  return intersect_triangle(r, triangles.values[tri].p0, triangles.values[tri].p1, triangles.values[tri].p2, tmin,
+                            tmax);
+}
+
+// Whether a hit at (t, tri) replaces `h`: nearer, or as near with a lower triangle index, so that
+// the answer never depends on the order in which a traversal meets the candidates.
+bool closer(float t, uint tri, Hit h) { return t < h.t || (h.hit && t == h.t && tri < h.triangle); }
+
+#ifdef TRACE_RAY_QUERY
+
+Hit trace_closest(vec3 o, vec3 d, float tmin, float tmax) {
+  ShearedRay r = shear_ray(o, d);
+  Hit h = no_hit(tmax);
+  rayQueryEXT rq;
+  rayQueryInitializeEXT(rq, scene, gl_RayFlagsNoneEXT, 0xFF, o, tmin, d, tmax);
+  while (rayQueryProceedEXT(rq)) {
+    if (rayQueryGetIntersectionTypeEXT(rq, false) != gl_RayQueryCandidateIntersectionAABBEXT) continue;
+    uint tri = uint(rayQueryGetIntersectionPrimitiveIndexEXT(rq, false));
+    vec3 x = intersect_triangle_index(r, tri, tmin, tmax);
+    if (x.x >= 0.0 && closer(x.x, tri, h)) {
+      // Committing lets the traversal skip boxes beyond t; a box whose triangle ties at t still
+      // starts before t (boxes are padded, render/bvh.hpp), so it is still reported.
+      if (x.x < h.t) rayQueryGenerateIntersectionEXT(rq, x.x);
+      h.hit = true;
+      h.triangle = tri;
+      h.t = x.x;
+      h.bary = x.yz;
+    }
   }
   return h;
 }
 
 bool trace_any(vec3 o, vec3 d, float tmin, float tmax) {
+  ShearedRay r = shear_ray(o, d);
+  bool hit = false;
   rayQueryEXT rq;
-  rayQueryInitializeEXT(rq, scene, gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT, 0xFF, o, tmin, d, tmax);
+  rayQueryInitializeEXT(rq, scene, gl_RayFlagsTerminateOnFirstHitEXT, 0xFF, o, tmin, d, tmax);
   while (rayQueryProceedEXT(rq)) {
+    if (rayQueryGetIntersectionTypeEXT(rq, false) != gl_RayQueryCandidateIntersectionAABBEXT) continue;
+    vec3 x = intersect_triangle_index(r, uint(rayQueryGetIntersectionPrimitiveIndexEXT(rq, false)), tmin, tmax);
+    if (x.x >= 0.0) {
+      rayQueryGenerateIntersectionEXT(rq, x.x);
+      hit = true;
+    }
   }
-  return rayQueryGetIntersectionTypeEXT(rq, true) != gl_RayQueryCommittedIntersectionNoneEXT;
+  return hit;
 }
 
 #else  // TRACE_SOFTWARE
@@ -100,11 +151,8 @@ vec3 safe_inverse(vec3 d) {
 
 // any_hit: stop at the first hit found.
 Hit traverse(vec3 o, vec3 d, float tmin, float tmax, bool any_hit) {
-  Hit h;
-  h.hit = false;
-  h.triangle = 0u;
-  h.t = tmax;
-  h.bary = vec2(0.0);
+  Hit h = no_hit(tmax);
+  ShearedRay r = shear_ray(o, d);
   vec3 inv_d = safe_inverse(d);
   uint stack[kBvhStackSize];
   uint top = 0u;
@@ -115,19 +163,19 @@ Hit traverse(vec3 o, vec3 d, float tmin, float tmax, bool any_hit) {
     if (count > 0u) {
       for (uint i = 0u; i < count; ++i) {
         uint tri = bvh_triangles.values[first + i];
-        vec3 r = intersect_triangle(o, d, triangles.values[tri].p0, triangles.values[tri].p1, triangles.values[tri].p2,
-                                    tmin, h.t);
-        if (r.x >= 0.0) {
+        vec3 x = intersect_triangle_index(r, tri, tmin, tmax);
+        if (x.x >= 0.0 && closer(x.x, tri, h)) {
           h.hit = true;
           h.triangle = tri;
-          h.t = r.x;
-          h.bary = r.yz;
+          h.t = x.x;
+          h.bary = x.yz;
           if (any_hit) return h;
         }
       }
     } else {
       uint left = first;
       uint right = first + 1u;
+      // A box entered exactly at h.t may still hold a tie with a lower index: `<=`, not `<`.
       float tl = box_entry(o, inv_d, bvh_nodes.values[left].bmin, bvh_nodes.values[left].bmax, tmin, h.t);
       float tr = box_entry(o, inv_d, bvh_nodes.values[right].bmin, bvh_nodes.values[right].bmax, tmin, h.t);
       bool hit_l = tl <= h.t;
@@ -155,11 +203,7 @@ Hit traverse(vec3 o, vec3 d, float tmin, float tmax, bool any_hit) {
   return h;
 }
 
-Hit trace_closest(vec3 o, vec3 d, float tmin, float tmax) {
-  Hit h = traverse(o, d, tmin, tmax, false);
-  if (h.hit) h = refine_hit(o, d, h.triangle, tmin, tmax, h.t, h.bary);
-  return h;
-}
+Hit trace_closest(vec3 o, vec3 d, float tmin, float tmax) { return traverse(o, d, tmin, tmax, false); }
 
 bool trace_any(vec3 o, vec3 d, float tmin, float tmax) { return traverse(o, d, tmin, tmax, true).hit; }
 

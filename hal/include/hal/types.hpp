@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace hal {
@@ -131,8 +132,17 @@ struct ImageDesc {
   ImageUsage usage = ImageUsage::Sampled | ImageUsage::Storage;
 };
 
-// Triangle geometry of a bottom-level acceleration structure: float3 positions (12-byte stride)
-// and uint32 indices, three per triangle. Both buffers need BufferUsage::AccelBuildInput.
+// What a bottom-level acceleration structure holds.
+//   Triangles: the traversal tests the triangles itself (fast on ray-tracing hardware).
+//   Boxes:     procedural primitives; the traversal reports every box the ray passes through as a
+//              candidate and the shader decides the hit (ray queries: rayQueryGenerateIntersectionEXT).
+//              Lets a shader apply its own intersection test, e.g. one shared with a software path.
+enum class BlasGeometry : std::uint8_t { Triangles, Boxes };
+
+// Triangles: float3 positions (12-byte stride) and uint32 indices, three per triangle.
+// Boxes: `boxes` holds box_count boxes as float3 min, float3 max (24-byte stride); the primitive
+// index a ray query reports is the box's position in that buffer.
+// The input buffers need BufferUsage::AccelBuildInput.
 struct BlasDesc {
   std::string name;
   BufferHandle vertices;
@@ -140,6 +150,20 @@ struct BlasDesc {
   BufferHandle indices;
   std::uint32_t triangle_count = 0;
   bool allow_update = false;  // refit in place later (build(update=true)) instead of rebuilding
+  BlasGeometry geometry = BlasGeometry::Triangles;
+  BufferHandle boxes;
+  std::uint32_t box_count = 0;
+
+  static BlasDesc of_boxes(std::string name, BufferHandle boxes, std::uint32_t box_count, bool allow_update = false) {
+    BlasDesc d;
+    d.name = std::move(name);
+    d.allow_update = allow_update;
+    d.geometry = BlasGeometry::Boxes;
+    d.boxes = boxes;
+    d.box_count = box_count;
+    return d;
+  }
+  std::uint32_t primitive_count() const { return geometry == BlasGeometry::Boxes ? box_count : triangle_count; }
 };
 
 // One instance of a top-level acceleration structure.

@@ -84,8 +84,12 @@ class RecordCommandList final : public CommandList {
     auto& a = device_.accel(blas);
     if (a.top_level) throw Error(ErrorKind::InvalidUsage, a.name, "build_blas on a top-level structure");
     Command c = make(Command::Op::BuildBlas, std::string(update ? "update" : "build") + " blas " + a.name);
-    c.uses.push_back({a.blas.vertices, true, false, State::AccelBuildInput, "vertex buffer"});
-    c.uses.push_back({a.blas.indices, true, false, State::AccelBuildInput, "index buffer"});
+    if (a.blas.geometry == BlasGeometry::Boxes) {
+      c.uses.push_back({a.blas.boxes, true, false, State::AccelBuildInput, "box buffer"});
+    } else {
+      c.uses.push_back({a.blas.vertices, true, false, State::AccelBuildInput, "vertex buffer"});
+      c.uses.push_back({a.blas.indices, true, false, State::AccelBuildInput, "index buffer"});
+    }
     c.uses.push_back({blas, update, true, State::AccelWrite, "built structure"});
     commands_.push_back(std::move(c));
   }

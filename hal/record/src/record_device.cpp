@@ -192,10 +192,15 @@ BindingSetHandle RecordDevice::create_binding_set(const BindingSetDesc& desc) {
 }
 
 AccelHandle RecordDevice::create_blas(const BlasDesc& desc) {
-  impl_->buffer(desc.vertices);
-  impl_->buffer(desc.indices);
-  if (desc.triangle_count == 0 || desc.vertex_count == 0)
-    throw Error(ErrorKind::InvalidDescriptor, desc.name, "bottom-level structure has no triangles");
+  if (desc.geometry == BlasGeometry::Boxes) {
+    impl_->buffer(desc.boxes);
+    if (desc.box_count == 0) throw Error(ErrorKind::InvalidDescriptor, desc.name, "bottom-level structure has no boxes");
+  } else {
+    impl_->buffer(desc.vertices);
+    impl_->buffer(desc.indices);
+    if (desc.triangle_count == 0 || desc.vertex_count == 0)
+      throw Error(ErrorKind::InvalidDescriptor, desc.name, "bottom-level structure has no triangles");
+  }
   AccelObject a{desc.name, false, desc};
   return AccelHandle{add(impl_->accels, std::move(a))};
 }
