@@ -56,7 +56,8 @@ ShearedRay shear_ray(vec3 o, vec3 d) {
 // Two-sided and watertight: a ray through an edge shared by two triangles hits at least one of
 // them (the edge functions of a shared edge are exact negatives; `precise` keeps compilers from
 // fusing them into FMAs, which would break that). Points on an edge count as inside.
-// Returns (t, weight of p1, weight of p2); t < 0 when there is no hit in (tmin, tmax).
+// Returns (t, weight of p1, weight of p2); t < 0 when there is no hit in (tmin, tmax). Rejects as
+// early as it can: most candidates of a traversal miss.
 vec3 intersect_triangle(ShearedRay r, vec3 p0, vec3 p1, vec3 p2, float tmin, float tmax) {
   precise vec3 a = permute_axes(p0 - r.o, r.kz);
   precise vec3 b = permute_axes(p1 - r.o, r.kz);
@@ -69,13 +70,15 @@ vec3 intersect_triangle(ShearedRay r, vec3 p0, vec3 p1, vec3 p2, float tmin, flo
   precise float cy = c.y - r.shear.y * c.z;
   precise float u = cx * by - cy * bx;
   precise float v = ax * cy - ay * cx;
+  if ((u < 0.0 && v > 0.0) || (u > 0.0 && v < 0.0)) return vec3(-1.0);
   precise float w = bx * ay - by * ax;
+  if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return vec3(-1.0);
   precise float det = u + v + w;
+  if (det == 0.0) return vec3(-1.0);
   precise float depth = u * (r.shear.z * a.z) + v * (r.shear.z * b.z) + w * (r.shear.z * c.z);
   float t = depth / det;
-  bool outside = (u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0);
-  bool hit = !outside && det != 0.0 && t > tmin && t < tmax;
-  return hit ? vec3(t, v / det, w / det) : vec3(-1.0);
+  if (!(t > tmin && t < tmax)) return vec3(-1.0);
+  return vec3(t, v / det, w / det);
 }
 
 vec3 intersect_triangle_index(ShearedRay r, uint tri, float tmin, float tmax) {
