@@ -219,6 +219,9 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
          "stays there to the last frame; \"> n\" when it is still above at the last frame.\n"
          "- **GPU time**: from the HAL's timestamps around every pass (Renderer::timings()); whole frame = sum of "
          "its passes; the table gives the median over the frames. "
+      << (d.timed_separately ? "Each run's frames were rendered a second time for timing, back to back after half a "
+                               "second of warm-up and with nothing read back, so that the GPU kept its clock up. "
+                             : "The frames were timed as rendered for the error measures, between their host work. ")
       << (d.cpu_device ? "On lavapipe these are CPU-emulated. " : "") << "\n"
       << "- **K**: accumulation's mean relMSE against its spp, interpolated linearly in log-log between the two "
          "measured spp counts that bracket `asvgf`'s mean relMSE; its GPU time at K is interpolated the same way.\n";

@@ -56,6 +56,7 @@ struct ReportData {
   std::string device_name, device_type;
   bool cpu_device = false;  // lavapipe: GPU times are CPU-emulated
   bool timestamps = false;
+  bool timed_separately = false;  // GPU times from a back-to-back pass of their own (asvgf report --timing)
   bool ray_query = false;
   std::optional<ChangeWindow> change;
   std::vector<int> crop_frames;

@@ -15,6 +15,9 @@ asvgf_add_cli_test("asvgf report gives the same numbers for the same seed and ot
 asvgf_add_cli_test("asvgf report --methods restricts the runs and says where the report landed" LABEL app EXIT 0
                    MATCH "report: [^ ]*report_tests/methods/report\\.md"
                    COMMAND bash -c "rm -rf ${report_dir}/methods && mkdir -p ${report_dir} && $<TARGET_FILE:asvgf> report --size 24x24 --frames 10 --reference-spp 32 --max-accumulation-spp 2 --methods asvgf,reference --out ${report_dir}/methods > ${report_dir}/methods.log 2>&1 && tail -n 3 ${report_dir}/methods.log && ${report_check} check ${report_dir}/methods asvgf,accum-1spp,accum-2spp")
+asvgf_add_cli_test("asvgf report --timing separate times every frame in a back-to-back pass and says so" LABEL app EXIT 0
+                   MATCH "rendered a second time for timing"
+                   COMMAND bash -c "rm -rf ${report_dir}/timing && $<TARGET_FILE:asvgf> report ${report_tiny_args} --methods asvgf,accum --timing separate --out ${report_dir}/timing && ${report_check} check ${report_dir}/timing asvgf,accum-1spp,accum-4spp && ${report_check} timed ${report_dir}/timing && grep -o 'rendered a second time for timing' ${report_dir}/timing/report.md")
 asvgf_add_cli_test("asvgf report rejects an unknown --methods entry with exit 2" LABEL app EXIT 2 MATCH "--methods.*magic"
                    COMMAND ${asvgf} report --methods asvgf,magic --out ${report_dir}/never)
 asvgf_add_cli_test("asvgf report rejects an impossible size with exit 2" LABEL app EXIT 2 MATCH "size"

@@ -6,6 +6,7 @@
                                            comparisons; every PNG is valid, non-empty, not flat
   report_check.py same DIR1 DIR2           report.csv equal except the GPU-time columns (*_ms)
   report_check.py differ DIR1 DIR2         the error columns differ (another seed)
+  report_check.py timed DIR                every row has a positive whole-frame GPU time
 """
 import csv
 import math
@@ -173,9 +174,20 @@ def differ(a, b):
     print("report_check: ok: %d of %d shared rows differ in relMSE" % (changed, len(common)))
 
 
+def timed(directory):
+    """Every row of report.csv has a finite, positive whole-frame GPU time."""
+    rows = read_csv(directory)
+    for row in rows:
+        if not finite(row["gpu_ms"]) or float(row["gpu_ms"]) <= 0:
+            fail("%s frame %s: gpu_ms is %r, not a positive time" % (row["run"], row["frame"], row["gpu_ms"]))
+    print("report_check: ok: %d rows timed" % len(rows))
+
+
 if __name__ == "__main__":
     if len(sys.argv) >= 3 and sys.argv[1] == "check":
         check(sys.argv[2], sys.argv[3].split(",") if len(sys.argv) > 3 and sys.argv[3] else [])
+    elif len(sys.argv) == 3 and sys.argv[1] == "timed":
+        timed(sys.argv[2])
     elif len(sys.argv) == 4 and sys.argv[1] in ("same", "differ"):
         (same if sys.argv[1] == "same" else differ)(sys.argv[2], sys.argv[3])
     else:
