@@ -1,11 +1,12 @@
 #include "passes/atrous.hpp"
 
 #include <cstddef>
-#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "graph/graph_runtime.hpp"
+#include "passes/compute_pass.hpp"
 #include "shaders/atrous.history.hpp"
 #include "shaders/atrous.plain.hpp"
 
@@ -49,19 +50,14 @@ void AtrousPass::add(graph::RenderGraph& graph, const Resources& r, int iteratio
   const auto& decl = graph.resource(r.color_out);
   const Uniforms u{decl.width,  decl.height, 1 << iteration, static_cast<std::uint32_t>(s.kernel),
                    s.sigma_z, s.sigma_n,   s.sigma_l};
-  auto pass = graph.add_pass("atrous." + std::to_string(iteration + 1));
-  pass.read(r.color_in).read(r.depth_normal).write(r.color_out);
-  if (r.color_history) pass.write(*r.color_history);
-  const bool history = r.color_history.has_value();
-  pass.execute([pipeline = history ? history_ : plain_, u, r](graph::PassContext& ctx) {
-    const hal::ShaderInfo& shader = asvgf::shaders::atrous_plain;  // same workgroup size in both variants
-    std::vector<hal::BindingSetDesc::Entry> entries{{"color_in", ctx.resource(r.color_in)},
-                                                    {"depth_normal", ctx.resource(r.depth_normal)},
-                                                    {"color_out", ctx.resource(r.color_out)}};
-    if (r.color_history) entries.push_back({"color_history", ctx.resource(*r.color_history)});
-    ctx.dispatch(pipeline, entries, std::as_bytes(std::span(&u, 1)), group_count(shader, 0, u.width),
-                 group_count(shader, 1, u.height));
-  });
+  std::vector<Binding> bindings{{"color_in", r.color_in},
+                                {"depth_normal", r.depth_normal},
+                                {"color_out", r.color_out, graph::Use::ShaderWrite}};
+  if (r.color_history) bindings.push_back({"color_history", *r.color_history, graph::Use::ShaderWrite});
+  const hal::ShaderInfo& shader = asvgf::shaders::atrous_plain;  // same workgroup size in both variants
+  add_compute_pass(graph, "atrous." + std::to_string(iteration + 1), r.color_history ? history_ : plain_,
+                   std::move(bindings), to_bytes(u),
+                   {group_count(shader, 0, u.width), group_count(shader, 1, u.height), 1});
 }
 
 graph::ResourceId AtrousPass::add_iterations(graph::RenderGraph& graph, graph::ResourceId input,

@@ -1,9 +1,9 @@
 #include "passes/composite.hpp"
 
 #include <cstddef>
-#include <span>
 
 #include "graph/graph_runtime.hpp"
+#include "passes/compute_pass.hpp"
 #include "shaders/composite.hpp"
 
 namespace asvgf::passes {
@@ -33,20 +33,13 @@ CompositePass::~CompositePass() { device_.destroy(pipeline_); }
 void CompositePass::add(graph::RenderGraph& graph, const Resources& r, const DenoiseSettings& s) const {
   const auto& decl = graph.resource(r.hdr);
   const Uniforms u{decl.width, decl.height, s.exposure, static_cast<std::uint32_t>(s.tonemap)};
-  graph.add_pass("composite")
-      .read(r.illumination)
-      .read(r.albedo)
-      .write(r.hdr)
-      .write(r.display)
-      .execute([pipeline = pipeline_, u, r](graph::PassContext& ctx) {
-        const hal::ShaderInfo& shader = asvgf::shaders::composite;
-        ctx.dispatch(pipeline,
-                     {{"illumination", ctx.resource(r.illumination)},
-                      {"albedo", ctx.resource(r.albedo)},
-                      {"hdr", ctx.resource(r.hdr)},
-                      {"display", ctx.resource(r.display)}},
-                     std::as_bytes(std::span(&u, 1)), group_count(shader, 0, u.width), group_count(shader, 1, u.height));
-      });
+  const hal::ShaderInfo& shader = asvgf::shaders::composite;
+  add_compute_pass(graph, "composite", pipeline_,
+                   {{"illumination", r.illumination},
+                    {"albedo", r.albedo},
+                    {"hdr", r.hdr, graph::Use::ShaderWrite},
+                    {"display", r.display, graph::Use::ShaderWrite}},
+                   to_bytes(u), {group_count(shader, 0, u.width), group_count(shader, 1, u.height), 1});
 }
 
 }  // namespace asvgf::passes

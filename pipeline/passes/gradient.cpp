@@ -1,9 +1,9 @@
 #include "passes/gradient.hpp"
 
 #include <cstddef>
-#include <span>
 
 #include "graph/graph_runtime.hpp"
+#include "passes/compute_pass.hpp"
 #include "shaders/gradient.hpp"
 
 namespace asvgf::passes {
@@ -32,19 +32,12 @@ void GradientPass::add(graph::RenderGraph& graph, const Resources& r) const {
   const auto& full = graph.resource(r.illumination);
   const auto& out = graph.resource(r.gradient);
   const Uniforms u{full.width, full.height, out.width, out.height};
-  graph.add_pass("gradient")
-      .read(r.illumination)
-      .read(r.gradient_prev)
-      .write(r.gradient)
-      .execute([pipeline = pipeline_, u, r](graph::PassContext& ctx) {
-        const hal::ShaderInfo& shader = asvgf::shaders::gradient;
-        ctx.dispatch(pipeline,
-                     {{"illumination", ctx.resource(r.illumination)},
-                      {"gradient_prev", ctx.resource(r.gradient_prev)},
-                      {"gradient", ctx.resource(r.gradient)}},
-                     std::as_bytes(std::span(&u, 1)), group_count(shader, 0, u.gradient_width),
-                     group_count(shader, 1, u.gradient_height));
-      });
+  const hal::ShaderInfo& shader = asvgf::shaders::gradient;
+  add_compute_pass(graph, "gradient", pipeline_,
+                   {{"illumination", r.illumination}, {"gradient_prev", r.gradient_prev},
+                    {"gradient", r.gradient, graph::Use::ShaderWrite}},
+                   to_bytes(u),
+                   {group_count(shader, 0, u.gradient_width), group_count(shader, 1, u.gradient_height), 1});
 }
 
 }  // namespace asvgf::passes

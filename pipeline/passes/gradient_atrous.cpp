@@ -1,9 +1,9 @@
 #include "passes/gradient_atrous.hpp"
 
 #include <cstddef>
-#include <span>
 
 #include "graph/graph_runtime.hpp"
+#include "passes/compute_pass.hpp"
 #include "shaders/gradient_atrous.hpp"
 
 namespace asvgf::passes {
@@ -38,19 +38,12 @@ void GradientAtrousPass::add(graph::RenderGraph& graph, const Resources& r, int 
   const auto& full = graph.resource(r.depth_normal);
   const auto& out = graph.resource(r.gradient_out);
   const Uniforms u{full.width, full.height, out.width, out.height, 1 << iteration, s.sigma_z, s.sigma_n};
-  graph.add_pass("gradient_atrous." + std::to_string(iteration + 1))
-      .read(r.gradient_in)
-      .read(r.depth_normal)
-      .write(r.gradient_out)
-      .execute([pipeline = pipeline_, u, r](graph::PassContext& ctx) {
-        const hal::ShaderInfo& shader = asvgf::shaders::gradient_atrous;
-        ctx.dispatch(pipeline,
-                     {{"gradient_in", ctx.resource(r.gradient_in)},
-                      {"depth_normal", ctx.resource(r.depth_normal)},
-                      {"gradient_out", ctx.resource(r.gradient_out)}},
-                     std::as_bytes(std::span(&u, 1)), group_count(shader, 0, u.gradient_width),
-                     group_count(shader, 1, u.gradient_height));
-      });
+  const hal::ShaderInfo& shader = asvgf::shaders::gradient_atrous;
+  add_compute_pass(graph, "gradient_atrous." + std::to_string(iteration + 1), pipeline_,
+                   {{"gradient_in", r.gradient_in}, {"depth_normal", r.depth_normal},
+                    {"gradient_out", r.gradient_out, graph::Use::ShaderWrite}},
+                   to_bytes(u),
+                   {group_count(shader, 0, u.gradient_width), group_count(shader, 1, u.gradient_height), 1});
 }
 
 graph::ResourceId GradientAtrousPass::add_iterations(graph::RenderGraph& graph, graph::ResourceId gradient,

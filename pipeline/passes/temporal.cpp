@@ -53,6 +53,8 @@ void TemporalPass::add(graph::RenderGraph& graph, const Resources& r, const Deno
     u.gradient_width = g.width;
     u.gradient_height = g.height;
   }
+  // Not add_compute_pass: the uniforms depend on whether the histories are valid, known only when
+  // the pass executes, and the counters need a barrier of their own.
   auto pass = graph.add_pass("temporal");
   pass.read(r.illumination).read(r.motion).read(r.depth_normal);
   pass.read_history(r.depth_normal).read_history(r.color_history).read_history(r.moments);

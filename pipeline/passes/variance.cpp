@@ -1,9 +1,9 @@
 #include "passes/variance.hpp"
 
 #include <cstddef>
-#include <span>
 
 #include "graph/graph_runtime.hpp"
+#include "passes/compute_pass.hpp"
 #include "shaders/variance.hpp"
 
 namespace asvgf::passes {
@@ -34,20 +34,13 @@ VariancePass::~VariancePass() { device_.destroy(pipeline_); }
 void VariancePass::add(graph::RenderGraph& graph, const Resources& r, const DenoiseSettings& s) const {
   const auto& decl = graph.resource(r.color_variance);
   const Uniforms u{decl.width, decl.height, s.sigma_z, s.sigma_n, s.sigma_l, s.min_history};
-  graph.add_pass("variance")
-      .read(r.integrated)
-      .read(r.moments)
-      .read(r.depth_normal)
-      .write(r.color_variance)
-      .execute([pipeline = pipeline_, u, r](graph::PassContext& ctx) {
-        const hal::ShaderInfo& shader = asvgf::shaders::variance;
-        ctx.dispatch(pipeline,
-                     {{"integrated", ctx.resource(r.integrated)},
-                      {"moments", ctx.resource(r.moments)},
-                      {"depth_normal", ctx.resource(r.depth_normal)},
-                      {"color_variance", ctx.resource(r.color_variance)}},
-                     std::as_bytes(std::span(&u, 1)), group_count(shader, 0, u.width), group_count(shader, 1, u.height));
-      });
+  const hal::ShaderInfo& shader = asvgf::shaders::variance;
+  add_compute_pass(graph, "variance", pipeline_,
+                   {{"integrated", r.integrated},
+                    {"moments", r.moments},
+                    {"depth_normal", r.depth_normal},
+                    {"color_variance", r.color_variance, graph::Use::ShaderWrite}},
+                   to_bytes(u), {group_count(shader, 0, u.width), group_count(shader, 1, u.height), 1});
 }
 
 }  // namespace asvgf::passes
