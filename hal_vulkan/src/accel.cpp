@@ -220,6 +220,25 @@ void VulkanCommandList::scratch_barrier(VkBuffer scratch) {
   vkCmdPipelineBarrier2(cmd_, &info);
 }
 
+void VulkanCommandList::record_build(VkCommandBuffer cmd, AccelObject& object,
+                                     const VkAccelerationStructureGeometryKHR& geometry, std::uint32_t primitives,
+                                     bool allow_update, bool update) {
+  VkAccelerationStructureBuildGeometryInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
+  info.type = object.top ? VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR : VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
+  info.flags = build_flags(allow_update);
+  info.mode = update ? VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR : VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+  info.srcAccelerationStructure = update ? object.handle : VK_NULL_HANDLE;
+  info.dstAccelerationStructure = object.handle;
+  info.geometryCount = 1;
+  info.pGeometries = &geometry;
+  info.scratchData.deviceAddress = object.scratch_address;
+  VkAccelerationStructureBuildRangeInfoKHR range{primitives, 0, 0, 0};
+  const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
+  scratch_barrier(object.scratch);
+  device_.fn().cmd_build_accel(cmd, 1, &info, &ranges);
+  object.recorded_build = true;
+}
+
 void VulkanCommandList::build_blas(AccelHandle handle, bool update) {
   VkCommandBuffer cmd = recording();
   AccelObject& object = device_.accels.get(handle.id, "acceleration structure");
@@ -232,20 +251,7 @@ void VulkanCommandList::build_blas(AccelHandle handle, bool update) {
   const BlasDesc& desc = object.blas;
   auto address = [&](BufferHandle b) { return b ? device_.buffers.get(b.id, "buffer").address : VkDeviceAddress{0}; };
   const auto geometry = blas_geometry(desc, address(desc.vertices), address(desc.indices), address(desc.boxes));
-  VkAccelerationStructureBuildGeometryInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
-  info.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
-  info.flags = build_flags(object.blas.allow_update);
-  info.mode = update ? VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR : VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
-  info.srcAccelerationStructure = update ? object.handle : VK_NULL_HANDLE;
-  info.dstAccelerationStructure = object.handle;
-  info.geometryCount = 1;
-  info.pGeometries = &geometry;
-  info.scratchData.deviceAddress = object.scratch_address;
-  VkAccelerationStructureBuildRangeInfoKHR range{desc.primitive_count(), 0, 0, 0};
-  const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
-  scratch_barrier(object.scratch);
-  device_.fn().cmd_build_accel(cmd, 1, &info, &ranges);
-  object.recorded_build = true;
+  record_build(cmd, object, geometry, desc.primitive_count(), desc.allow_update, update);
 }
 
 void VulkanCommandList::build_tlas(AccelHandle handle, std::span<const TlasInstance> list, bool update) {
@@ -287,20 +293,7 @@ void VulkanCommandList::build_tlas(AccelHandle handle, std::span<const TlasInsta
   }
   const VkDeviceSize offset = upload(data.data(), data.size() * sizeof(data[0]), 16);
   const auto geometry = instances(device_.ring().address + offset);
-  VkAccelerationStructureBuildGeometryInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
-  info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
-  info.flags = build_flags(object.tlas.allow_update);
-  info.mode = update ? VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR : VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
-  info.srcAccelerationStructure = update ? object.handle : VK_NULL_HANDLE;
-  info.dstAccelerationStructure = object.handle;
-  info.geometryCount = 1;
-  info.pGeometries = &geometry;
-  info.scratchData.deviceAddress = object.scratch_address;
-  VkAccelerationStructureBuildRangeInfoKHR range{static_cast<std::uint32_t>(list.size()), 0, 0, 0};
-  const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
-  scratch_barrier(object.scratch);
-  device_.fn().cmd_build_accel(cmd, 1, &info, &ranges);
-  object.recorded_build = true;
+  record_build(cmd, object, geometry, static_cast<std::uint32_t>(list.size()), object.tlas.allow_update, update);
   object.built_instances = static_cast<std::uint32_t>(list.size());
 }
 
