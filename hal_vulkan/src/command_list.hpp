@@ -55,6 +55,8 @@ class VulkanCommandList final : public hal::CommandList {
   VkDeviceSize upload(const void* bytes, VkDeviceSize size, VkDeviceSize alignment);
   void release_chunks();
   void scratch_barrier(VkBuffer scratch);
+  // The timer object of `handle`, after checking that `region` is one of its regions.
+  TimerObject& timer_region(TimerQueriesHandle handle, std::uint32_t region);
   // Records one build or update of `object` (BLAS or TLAS) from `geometry`, after its scratch barrier.
   void record_build(VkCommandBuffer cmd, AccelObject& object, const VkAccelerationStructureGeometryKHR& geometry,
                     std::uint32_t primitives, bool allow_update, bool update);

@@ -57,12 +57,17 @@ std::vector<std::optional<double>> VulkanDevice::read_timers(TimerQueriesHandle 
   return times;
 }
 
-void VulkanCommandList::begin_timer(TimerQueriesHandle handle, std::uint32_t region) {
-  VkCommandBuffer cmd = recording();
+TimerObject& VulkanCommandList::timer_region(TimerQueriesHandle handle, std::uint32_t region) {
   TimerObject& t = device_.timers.get(handle.id, "timer queries");
   if (region >= t.regions)
     throw Error(ErrorKind::InvalidUsage, t.name,
                 "region " + std::to_string(region) + " out of " + std::to_string(t.regions) + " (in '" + name_ + "')");
+  return t;
+}
+
+void VulkanCommandList::begin_timer(TimerQueriesHandle handle, std::uint32_t region) {
+  VkCommandBuffer cmd = recording();
+  TimerObject& t = timer_region(handle, region);
   if (!t.pool) return;
   vkCmdResetQueryPool(cmd, t.pool, 2 * region, 2);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, t.pool, 2 * region);
@@ -70,10 +75,7 @@ void VulkanCommandList::begin_timer(TimerQueriesHandle handle, std::uint32_t reg
 
 void VulkanCommandList::end_timer(TimerQueriesHandle handle, std::uint32_t region) {
   VkCommandBuffer cmd = recording();
-  TimerObject& t = device_.timers.get(handle.id, "timer queries");
-  if (region >= t.regions)
-    throw Error(ErrorKind::InvalidUsage, t.name,
-                "region " + std::to_string(region) + " out of " + std::to_string(t.regions) + " (in '" + name_ + "')");
+  TimerObject& t = timer_region(handle, region);
   if (!t.pool) return;
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, t.pool, 2 * region + 1);
   timer_writes_.emplace_back(handle.id, region);
