@@ -92,6 +92,9 @@ SanitizeCounters::~SanitizeCounters() { device_.destroy(buffer_); }
 
 graph::ResourceId SanitizeCounters::import(graph::RenderGraph& graph) {
   const graph::ResourceId id = graph.import("sanitize_counters", buffer_, state_);
+  // An output with a final state: the frame leaves the buffer in ShaderWrite whatever runs, so the
+  // state recorded here for the next import is a guarantee, not an assumption about the passes.
+  graph.output(id, hal::State::ShaderWrite);
   state_ = hal::State::ShaderWrite;
   return id;
 }

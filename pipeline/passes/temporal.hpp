@@ -47,7 +47,8 @@ class SanitizeCounters {
   SanitizeCounters(const SanitizeCounters&) = delete;
   SanitizeCounters& operator=(const SanitizeCounters&) = delete;
 
-  // Imports the buffer into this frame's graph as "sanitize_counters" (in the state it was left);
+  // Imports the buffer into this frame's graph as "sanitize_counters" (in the state it was left), as
+  // an output that ends the frame in ShaderWrite;
   // call once per graph that runs the temporal pass.
   graph::ResourceId import(graph::RenderGraph& graph);
   struct Counts {
