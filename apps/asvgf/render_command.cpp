@@ -106,10 +106,12 @@ int run_render(RenderOptions& o) {
     std::ofstream(tmp) << csv.str();
     std::filesystem::rename(tmp, path);
   }
-  const auto dropped = renderer.dropped_samples();
+  const auto sanitised = renderer.dropped_samples();
   if (!o.quiet) {
-    std::fprintf(stderr, "path-tracer samples dropped before the histories: %u NaN, %u Inf\n", dropped.nan_samples,
-                 dropped.inf_samples);
+    std::fprintf(stderr,
+                 "sanitised: %u samples with NaN and %u with Inf dropped before the histories, %u clamped to the "
+                 "fp16 maximum 65504, %u output pixels written as 0 (not finite)\n",
+                 sanitised.nan_samples, sanitised.inf_samples, sanitised.clamped_samples, sanitised.zeroed_outputs);
     std::fprintf(stderr, "results: %s/frame_NNNN.{exr,png}%s\n", dir.string().c_str(),
                  reference ? ", reference_NNNN.{exr,png}, metrics.csv" : "");
   }

@@ -46,6 +46,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const ResourceId hdr = g.import("hdr", targets.hdr, targets.hdr_state, w, h);
   const ResourceId display = g.import("display", targets.display, targets.display_state, w, h);
   const ResourceId rays = g.import("ray_counter", targets.ray_counter, targets.ray_counter_state);
+  const ResourceId counters = counters_.import(g);
   g.output(rays, hal::State::CopySrc);
   // Persistent: read next frame as histories.
   const ResourceId vbuffer = g.add_image("visibility", w, h, F::RGBA32Uint, Lifetime::Persistent);
@@ -103,7 +104,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
     const bool spatial = s.method != Method::Ema && denoise.atrous_iterations > 0;
     // Without a spatial filter the temporal result is itself next frame's colour history.
     const ResourceId integrated = spatial ? g.add_image("integrated", w, h, F::RGBA16F) : color_history;
-    temporal_.add(g, {illumination, motion, depth_normal, color_history, moments, integrated, counters_.import(g),
+    temporal_.add(g, {illumination, motion, depth_normal, color_history, moments, integrated, counters,
                       gradient_final},
                   denoise);
     filtered = integrated;
@@ -123,7 +124,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
     }
   }
 
-  composite_.add(g, {filtered, albedo, hdr, display}, denoise);
+  composite_.add(g, {filtered, albedo, hdr, display, counters}, denoise);
   g.output(hdr, hal::State::CopySrc);
   g.output(display, hal::State::CopySrc);
 

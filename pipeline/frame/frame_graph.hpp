@@ -65,7 +65,7 @@ class FrameGraphBuilder {
 
   // Declares the frame over the scene's GPU buffers (imported) and the caller's output images.
   graph::RenderGraph build(const FrameSettings& settings, const render::SceneGpu& scene, const FrameTargets& targets);
-  // NaN and Inf samples the temporal pass dropped so far (waits for the device).
+  // What the temporal and composite passes dropped, clamped and zeroed so far (waits for the device).
   passes::SanitizeCounters::Counts dropped_samples() { return counters_.read(); }
 
  private:

@@ -121,6 +121,8 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
   }
 
   // Ordering: a reader comes after every other writer of what it reads (Kahn, ties by declaration).
+  // Passes that read-modify-write one resource (counters both accumulate into) would each come after
+  // the other: among themselves they keep their declaration order.
   std::vector<std::set<std::size_t>> after(n);  // after[w] = passes that must follow w
   std::vector<int> indegree(n);
   for (std::size_t p = 0; p < n; ++p) {
@@ -128,7 +130,7 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
     for (const auto& a : accesses[p]) {
       if (!reads(a.use) || a.history) continue;
       for (std::size_t w : writers[a.resource])
-        if (w != p && live[w] && after[w].insert(p).second) ++indegree[p];
+        if (w != p && live[w] && !(writes(a.use) && w > p) && after[w].insert(p).second) ++indegree[p];
     }
   }
   std::vector<std::size_t> order;

@@ -38,7 +38,8 @@ void CompositePass::add(graph::RenderGraph& graph, const Resources& r, const Den
                    {{"illumination", r.illumination},
                     {"albedo", r.albedo},
                     {"hdr", r.hdr, graph::Use::ShaderWrite},
-                    {"display", r.display, graph::Use::ShaderWrite}},
+                    {"display", r.display, graph::Use::ShaderWrite},
+                    {"counters", r.counters, graph::Use::ShaderReadWrite}},
                    to_bytes(u), {group_count(shader, 0, u.width), group_count(shader, 1, u.height), 1});
 }
 

@@ -14,6 +14,7 @@ class CompositePass {
     graph::ResourceId albedo = 0;        // read: RGBA16F
     graph::ResourceId hdr = 0;           // written: RGBA32F
     graph::ResourceId display = 0;       // written: RGBA8Unorm, sRGB-encoded
+    graph::ResourceId counters = 0;      // read-written SanitizeCounters buffer: zeroed outputs
   };
   explicit CompositePass(hal::Device& device);
   ~CompositePass();

@@ -83,7 +83,7 @@ void TemporalPass::add(graph::RenderGraph& graph, const Resources& r, const Deno
 SanitizeCounters::SanitizeCounters(hal::Device& device) : device_(device) {
   buffer_ = device_.create_buffer(
       {"sanitize_counters", kSize, hal::BufferUsage::Storage | hal::BufferUsage::CopySrc | hal::BufferUsage::CopyDst});
-  const std::array<std::uint32_t, 2> zeros{0, 0};
+  const std::array<std::uint32_t, 4> zeros{};
   device_.upload_buffer(buffer_, 0, std::as_bytes(std::span(zeros)));
   state_ = hal::State::CopyDst;
 }
@@ -108,9 +108,9 @@ SanitizeCounters::Counts SanitizeCounters::read() {
     device_.wait();
     state_ = hal::State::CopySrc;
   }
-  std::array<std::uint32_t, 2> values{};
+  std::array<std::uint32_t, 4> values{};
   device_.read_buffer(buffer_, 0, std::as_writable_bytes(std::span(values)));
-  return {values[0], values[1]};
+  return {values[0], values[1], values[2], values[3]};
 }
 
 }  // namespace asvgf::passes

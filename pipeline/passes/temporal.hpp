@@ -20,7 +20,7 @@ class TemporalPass {
     graph::ResourceId color_history = 0;  // its history read: persistent RGBA16F (rgb, variance)
     graph::ResourceId moments = 0;        // history read and written: persistent RGBA32F (E[l], E[l^2], n, 0)
     graph::ResourceId integrated = 0;     // written: RGBA16F (rgb, temporal variance); may be color_history
-    graph::ResourceId counters = 0;       // read-written buffer of 2 uint32 (SanitizeCounters)
+    graph::ResourceId counters = 0;       // read-written SanitizeCounters buffer
     std::optional<graph::ResourceId> gradient;  // read: 1/3 res RGBA16F (delta^, Delta^); adaptive alpha
   };
   explicit TemporalPass(hal::Device& device);
@@ -37,22 +37,23 @@ class TemporalPass {
   hal::PipelineHandle constant_, adaptive_;
 };
 
-// The buffer the temporal pass counts dropped samples into: [0] samples with a NaN component,
-// [1] samples with an infinite component (and no NaN). Totals since creation.
+// The buffer the temporal and composite passes count into: samples dropped with a NaN component,
+// with an infinite component (and no NaN), finite samples clamped to the fp16 maximum (65504)
+// before the histories, and output pixels written as 0 because their radiance was not finite.
+// Totals since creation.
 class SanitizeCounters {
  public:
-  static constexpr std::uint64_t kSize = 8;
+  static constexpr std::uint64_t kSize = 16;
   explicit SanitizeCounters(hal::Device& device);
   ~SanitizeCounters();
   SanitizeCounters(const SanitizeCounters&) = delete;
   SanitizeCounters& operator=(const SanitizeCounters&) = delete;
 
   // Imports the buffer into this frame's graph as "sanitize_counters" (in the state it was left), as
-  // an output that ends the frame in ShaderWrite;
-  // call once per graph that runs the temporal pass.
+  // an output that ends the frame in ShaderWrite; call once per graph.
   graph::ResourceId import(graph::RenderGraph& graph);
   struct Counts {
-    std::uint32_t nan_samples = 0, inf_samples = 0;
+    std::uint32_t nan_samples = 0, inf_samples = 0, clamped_samples = 0, zeroed_outputs = 0;
   };
   // Waits for the device and reads the totals.
   Counts read();

@@ -1,6 +1,7 @@
 #include "render/image_io.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -65,7 +66,7 @@ void write_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t
     for (int c = 0; c < 3; ++c) rgb[3 * p + c] = rgba[4 * p + c];
   const auto tmp = temporary_for(path);
   const char* err = nullptr;
-  if (SaveEXR(rgb.data(), static_cast<int>(w), static_cast<int>(h), 3, /*save_as_fp16=*/1, tmp.c_str(), &err) != 0) {
+  if (SaveEXR(rgb.data(), static_cast<int>(w), static_cast<int>(h), 3, /*save_as_fp16=*/0, tmp.c_str(), &err) != 0) {
     std::string message = err ? err : "unknown error";
     if (err) FreeEXRErrorMessage(err);
     std::error_code ec;
@@ -73,6 +74,21 @@ void write_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t
     throw ImageIoError(path.string() + ": cannot write EXR: " + message);
   }
   commit(tmp, path);
+}
+
+ExrImage read_exr(const std::filesystem::path& path) {
+  float* data = nullptr;
+  int w = 0, h = 0;
+  const char* err = nullptr;
+  if (LoadEXR(&data, &w, &h, path.c_str(), &err) != 0) {
+    std::string message = err ? err : "unknown error";
+    if (err) FreeEXRErrorMessage(err);
+    throw ImageIoError(path.string() + ": cannot read EXR: " + message);
+  }
+  ExrImage image{static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h),
+                 std::vector<float>(data, data + std::size_t(w) * std::size_t(h) * 4)};
+  std::free(data);
+  return image;
 }
 
 }  // namespace asvgf::render

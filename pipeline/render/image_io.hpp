@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <span>
 #include <stdexcept>
+#include <vector>
 
 namespace asvgf::render {
 
@@ -17,9 +18,17 @@ class ImageIoError : public std::runtime_error {
 // rgba: width*height*4 bytes, rows top to bottom.
 void write_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
                std::span<const std::uint8_t> rgba);
-// rgba: width*height*4 floats; written as half floats (RGB; A dropped). Throws ImageIoError when a
+// rgba: width*height*4 floats; written as 32-bit floats (RGB; A dropped), so every finite radiance
+// is stored exactly (half floats turned values above 65504 into +Inf). Throws ImageIoError when a
 // value is NaN or infinite, naming the file and the first bad pixel.
 void write_exr(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
                std::span<const float> rgba);
+
+struct ExrImage {
+  std::uint32_t width = 0, height = 0;
+  std::vector<float> rgba;  // width*height*4, rows top to bottom (A = 1 where the file has none)
+};
+// Reads an OpenEXR file (any channel type, converted to float). Throws ImageIoError naming the file.
+ExrImage read_exr(const std::filesystem::path& path);
 
 }  // namespace asvgf::render

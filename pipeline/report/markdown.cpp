@@ -17,6 +17,14 @@ std::string g(double v, int digits = 3) {
   return buf;
 }
 
+// "-3.2% (14 frames)", or "n/a" when no frame had a saturated history and a lit reference.
+std::string energy_text(const EnergyBias& e) {
+  if (!e.bias) return "n/a";
+  char text[64];
+  std::snprintf(text, sizeof text, "%+.2f%% (%d frames)", 100.0 * *e.bias, e.frames);
+  return text;
+}
+
 std::string lag_text(const Lag& lag, int frames) {
   if (!lag.measured) return "n/a";
   if (!lag.frames) return "> " + std::to_string(frames - 1 - lag.change_frame);
@@ -32,11 +40,12 @@ class Md {
 
   void run_table(const std::vector<const RunResult*>& runs) {
     out << "| run | what | mean relMSE | mean SSIM | mean temporal error | relMSE from the change on | lag (frames) | "
-        << time_header() << " |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+           "energy bias | "
+        << time_header() << " |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const RunResult* r : runs)
       out << "| `" << r->spec.name << "` | " << r->spec.description << " | " << g(r->mean_relmse) << " | "
           << g(r->mean_ssim, 4) << " | " << g(r->mean_temporal) << " | " << g(r->mean_relmse_after_change) << " | "
-          << lag_text(r->lag, d_.frames) << " | " << g(r->gpu_ms) << " |\n";
+          << lag_text(r->lag, d_.frames) << " | " << energy_text(r->energy) << " | " << g(r->gpu_ms) << " |\n";
     out << "\n";
   }
 
@@ -223,6 +232,12 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
                                "second of warm-up and with nothing read back, so that the GPU kept its clock up. "
                              : "The frames were timed as rendered for the error measures, between their host work. ")
       << (d.cpu_device ? "On lavapipe these are CPU-emulated. " : "") << "\n"
+      << "- **energy bias**: the run's mean linear radiance summed over the frames where its temporal history "
+         "is saturated, over the reference's sum on the same frames, minus 1 (negative: the method loses energy). "
+         "A frame counts from ceil(1/α) frames after frame 0 and after the change's last frame (until then the "
+         "history averages uniformly, α_eff = max(α, 1/n)); every frame for `raw` and accumulation; never where the "
+         "reference is black (on `light-exit` the room is dark once the light has left, so use `--animation "
+         "static`). n/a when no frame counts.\n"
       << "- **K**: accumulation's mean relMSE against its spp, interpolated linearly in log-log between the two "
          "measured spp counts that bracket `asvgf`'s mean relMSE; its GPU time at K is interpolated the same way.\n";
   return out.str();

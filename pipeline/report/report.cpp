@@ -24,8 +24,13 @@ std::string short_num(double v, int digits = 3) {
 
 }  // namespace
 
+int RunSpec::history_ramp() const {
+  if (method == frame::Method::Raw || accumulation()) return 0;
+  return static_cast<int>(std::ceil(1.0 / static_cast<double>(denoise.alpha) - 1e-9));
+}
+
 void summarise(RunResult& run, std::optional<ChangeWindow> change) {
-  std::vector<double> relmse, ssim, temporal, gpu, after;
+  std::vector<double> relmse, ssim, temporal, gpu, after, radiance, reference_radiance;
   std::map<std::string, std::vector<double>> passes;
   std::vector<std::string> order;
   for (const auto& f : run.frames) {
@@ -33,6 +38,8 @@ void summarise(RunResult& run, std::optional<ChangeWindow> change) {
     ssim.push_back(f.ssim);
     temporal.push_back(f.temporal);
     gpu.push_back(f.gpu_ms.value_or(NAN));
+    radiance.push_back(f.mean);
+    reference_radiance.push_back(f.reference_mean);
     if (!change || f.frame >= change->first) after.push_back(f.relmse);
     for (const auto& [pass, ms] : f.pass_ms) {
       if (!passes.count(pass)) order.push_back(pass);
@@ -47,6 +54,7 @@ void summarise(RunResult& run, std::optional<ChangeWindow> change) {
   run.pass_ms.clear();
   for (const auto& p : order) run.pass_ms.emplace_back(p, median(passes[p]));
   run.lag = measure_lag(relmse, change);
+  run.energy = energy_bias(radiance, reference_radiance, change, run.spec.history_ramp());
 }
 
 const RunResult* find_run(const ReportData& data, const std::string& name) {

@@ -24,6 +24,9 @@ struct RunSpec {
   std::uint32_t spp = 1;
   passes::DenoiseSettings denoise;
   bool accumulation() const { return method == frame::Method::Reference; }
+  // Frames until the temporal history is saturated (alpha_eff = max(alpha, 1/n) reaches alpha);
+  // 0 for methods without a history.
+  int history_ramp() const;
 };
 
 struct FrameResult {
@@ -45,6 +48,7 @@ struct RunResult {
   double gpu_ms = 0;                    // median whole-frame GPU ms; NaN without timestamps
   std::vector<std::pair<std::string, double>> pass_ms;  // median per pass, in pass order
   Lag lag;
+  EnergyBias energy;
 };
 
 struct ReportData {

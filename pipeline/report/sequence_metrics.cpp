@@ -94,6 +94,22 @@ double evaluate_loglog(const std::vector<double>& xs, const std::vector<double>&
   return std::exp(std::log(ys[i]) + t * (std::log(ys[i + 1]) - std::log(ys[i])));
 }
 
+EnergyBias energy_bias(const std::vector<double>& mean, const std::vector<double>& reference_mean,
+                       std::optional<ChangeWindow> change, int ramp) {
+  EnergyBias e;
+  double sum = 0, reference_sum = 0;
+  for (std::size_t t = 0; t < mean.size() && t < reference_mean.size(); ++t) {
+    const int f = static_cast<int>(t);
+    const bool saturated = f >= ramp && (!change || f < change->first || f - change->last >= ramp);
+    if (!saturated || !(reference_mean[t] > 0) || !std::isfinite(mean[t])) continue;
+    sum += mean[t];
+    reference_sum += reference_mean[t];
+    ++e.frames;
+  }
+  if (e.frames > 0) e.bias = sum / reference_sum - 1.0;
+  return e;
+}
+
 double mean(const std::vector<double>& v) {
   double sum = 0;
   int n = 0;

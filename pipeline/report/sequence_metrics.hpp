@@ -51,6 +51,18 @@ CurveHit interpolate_loglog(const std::vector<double>& xs, const std::vector<dou
 // y at x on the same log-log polyline (extrapolated linearly in log-log from the nearest segment).
 double evaluate_loglog(const std::vector<double>& xs, const std::vector<double>& ys, double x);
 
+// Energy bias of a run: the sum of its mean linear radiance over the frames where its temporal
+// history is saturated, against the reference's sum over the same frames, minus 1 (0.01 = 1% too
+// bright). A frame counts when it is at least `ramp` frames after frame 0 and after the last frame
+// of the change (a history blends uniformly, 1/n, until n reaches 1/alpha; `ramp` = 0 for methods
+// without a history) and its reference is not black. Empty when no frame counts.
+struct EnergyBias {
+  std::optional<double> bias;
+  int frames = 0;  // frames that counted
+};
+EnergyBias energy_bias(const std::vector<double>& mean, const std::vector<double>& reference_mean,
+                       std::optional<ChangeWindow> change, int ramp);
+
 double mean(const std::vector<double>& v);    // of the finite values; NaN when none
 double median(std::vector<double> v);          // of the finite values; NaN when none
 

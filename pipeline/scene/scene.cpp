@@ -96,6 +96,20 @@ std::string label(const char* kind, const std::string& name, std::size_t index) 
 
 bool non_negative(const glm::vec3& v) { return finite(v) && v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f; }
 
+bool valid_emission(const glm::vec3& v) {
+  return non_negative(v) && v.x <= kMaxEmission && v.y <= kMaxEmission && v.z <= kMaxEmission;
+}
+const char* const kEmissionRange =
+    " must be finite, in [0, 65504] per channel (the denoiser's fp16 histories hold no more; scale every "
+    "emission down and --exposure up)";
+
+bool in_coordinate_range(const glm::vec3& v) {
+  return std::abs(v.x) <= kMaxCoordinate && std::abs(v.y) <= kMaxCoordinate && std::abs(v.z) <= kMaxCoordinate;
+}
+const char* const kCoordinateRange =
+    " is beyond +-2^30 (1.07e9) on an axis: float32 ray tracing multiplies up to four coordinate differences, "
+    "which would overflow";
+
 template <typename T>
 void check_keyframes(const std::string& where, const std::string& owner, const std::vector<Keyframe<T>>& keys) {
   if (keys.empty()) fail(where, owner, ": has no keyframe");
@@ -178,7 +192,7 @@ void validate(const Scene& scene, const std::string& where) {
     if (!non_negative(mat.albedo) || mat.albedo.x > 1.0f || mat.albedo.y > 1.0f || mat.albedo.z > 1.0f) {
       fail(where, who, ": albedo ", str(mat.albedo), " must be finite and in [0, 1]");
     }
-    if (!non_negative(mat.emission)) fail(where, who, ": emission ", str(mat.emission), " must be finite and >= 0");
+    if (!valid_emission(mat.emission)) fail(where, who, ": emission ", str(mat.emission), kEmissionRange);
     if (mat.albedo_texture < -1 || mat.albedo_texture >= static_cast<int>(scene.textures.size())) {
       fail(where, who, ": albedo texture index ", mat.albedo_texture, " out of range (", scene.textures.size(),
            " textures)");
@@ -200,6 +214,16 @@ void validate(const Scene& scene, const std::string& where) {
         fail(where, who, ": keyframe ", k, ": transform is not finite");
       }
       if (std::abs(glm::length(tr.rotation) - 1.0f) > 1e-3f) fail(where, who, ": keyframe ", k, ": rotation is not a unit quaternion");
+      // World space at each keyframe (between keyframes positions are interpolated).
+      const glm::mat4 m = tr.matrix();
+      const Mesh& mesh = scene.meshes[inst.mesh];
+      for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+        const glm::vec3 world(m * glm::vec4(mesh.positions[v], 1.0f));
+        if (!in_coordinate_range(world)) {
+          fail(where, who, ": keyframe ", k, ": ", label("mesh", mesh.name, inst.mesh), " vertex ", v, " lands at ",
+               str(world), ", which", kCoordinateRange);
+        }
+      }
     }
     triangles += scene.meshes[inst.mesh].triangle_count();
   }
@@ -213,7 +237,9 @@ void validate(const Scene& scene, const std::string& where) {
       const SphereLightState& s = light.state[k].value;
       if (!finite(s.position)) fail(where, who, ": keyframe ", k, ": position is not finite");
       if (!(s.radius > 0.0f) || !finite(s.radius)) fail(where, who, ": keyframe ", k, ": radius ", s.radius, " must be > 0");
-      if (!non_negative(s.emission)) fail(where, who, ": keyframe ", k, ": emission ", str(s.emission), " must be finite and >= 0");
+      if (!in_coordinate_range(glm::abs(s.position) + s.radius))
+        fail(where, who, ": keyframe ", k, ": the sphere at ", str(s.position), " of radius ", s.radius, kCoordinateRange);
+      if (!valid_emission(s.emission)) fail(where, who, ": keyframe ", k, ": emission ", str(s.emission), kEmissionRange);
     }
   }
 
@@ -221,6 +247,8 @@ void validate(const Scene& scene, const std::string& where) {
   for (std::size_t k = 0; k < scene.camera.size(); ++k) {
     const CameraState& c = scene.camera[k].value;
     if (!finite(c.position) || !finite(c.target) || !finite(c.up)) fail(where, "camera: keyframe ", k, ": not finite");
+    if (!in_coordinate_range(c.position)) fail(where, "camera: keyframe ", k, ": position ", str(c.position), kCoordinateRange);
+    if (!in_coordinate_range(c.target)) fail(where, "camera: keyframe ", k, ": target ", str(c.target), kCoordinateRange);
     if (glm::length(c.target - c.position) <= 0.0f) fail(where, "camera: keyframe ", k, ": target equals position");
     if (glm::length(glm::cross(c.target - c.position, c.up)) <= 1e-6f * glm::length(c.target - c.position)) {
       fail(where, "camera: keyframe ", k, ": up is zero or parallel to the view direction");

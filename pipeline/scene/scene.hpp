@@ -25,10 +25,24 @@ struct Texture {
   std::vector<std::uint8_t> rgba8;  // width*height*4, sRGB-encoded albedo
 };
 
+// The valid ranges, checked by validate():
+// - Emitted radiance (materials and sphere lights), per channel, in [0, kMaxEmission]: 65504, the
+//   largest half float. The denoiser keeps radiance in fp16 histories, so a brighter emitter seen
+//   directly could only be clamped; scale every emission down and --exposure up instead (radiance
+//   units are relative). Albedo, per channel, in [0, 1] (energy conservation).
+// - World-space coordinates (vertices under every instance keyframe, light centres +- radius,
+//   camera position and target), per axis, of magnitude <= kMaxCoordinate = 2^30 (~1.07e9). Ray
+//   tracing in float32 multiplies up to four coordinate differences (|cross(e1, e2)|^2 when a
+//   sample is projected forward; the watertight test's depth is a product of three), and
+//   (2 * 2^30)^4 = 2^124 stays below float32's largest value 2^128. Scenes are scale-independent
+//   below it: the ray offsets are relative (shaders/frame/pathtrace.comp).
+constexpr float kMaxEmission = 65504.0f;
+constexpr float kMaxCoordinate = 1073741824.0f;  // 2^30
+
 struct Material {
   std::string name;
   glm::vec3 albedo{0.8f};    // diffuse reflectance in [0,1]
-  glm::vec3 emission{0.0f};  // emitted radiance (W/(sr m^2)); > 0 makes every triangle a light
+  glm::vec3 emission{0.0f};  // emitted radiance (W/(sr m^2)) in [0, kMaxEmission]; > 0 makes every triangle a light
   int albedo_texture = -1;   // index into Scene::textures, multiplies albedo; -1: none
 };
 
@@ -102,7 +116,8 @@ FrameState evaluate(const Scene& scene, float frame);
 bool same_state(const FrameState& a, const FrameState& b);
 
 // Checks a scene for what would break rendering (no triangles, NaN vertex, index or material out of
-// range, bad texture): throws SceneError naming `where` and the problem.
+// range, bad texture, values outside the valid ranges above): throws SceneError naming `where`, the
+// object (material, mesh and vertex, instance and keyframe, light, camera) and the problem.
 void validate(const Scene& scene, const std::string& where);
 
 }  // namespace asvgf::scene

@@ -6,13 +6,16 @@
 // The including shader declares `triangles` (world-space Triangle[]) and the variant's buffers.
 // Both variants run the same watertight triangle test over conservative candidate sets and break
 // ties in depth by the lower triangle index, so they return the same hit to the bit, even for a ray
-// through an edge two triangles share.
+// through an edge two triangles share. `skip` is a triangle the ray never hits: the one it leaves
+// from (a planar triangle cannot be hit again by a ray leaving its front side), or kNoTriangle.
 #ifndef ASVGF_COMMON_TRACE_GLSL
 #define ASVGF_COMMON_TRACE_GLSL
 
 #if !defined(TRACE_RAY_QUERY) && !defined(TRACE_SOFTWARE)
 #error "define TRACE_RAY_QUERY or TRACE_SOFTWARE"
 #endif
+
+const uint kNoTriangle = 0xFFFFFFFFu;
 
 struct Hit {
   bool hit;
@@ -92,7 +95,7 @@ bool closer(float t, uint tri, Hit h) { return t < h.t || (h.hit && t == h.t && 
 
 #ifdef TRACE_RAY_QUERY
 
-Hit trace_closest(vec3 o, vec3 d, float tmin, float tmax) {
+Hit trace_closest(vec3 o, vec3 d, float tmin, float tmax, uint skip) {
   ShearedRay r = shear_ray(o, d);
   Hit h = no_hit(tmax);
   rayQueryEXT rq;
@@ -100,6 +103,7 @@ Hit trace_closest(vec3 o, vec3 d, float tmin, float tmax) {
   while (rayQueryProceedEXT(rq)) {
     if (rayQueryGetIntersectionTypeEXT(rq, false) != gl_RayQueryCandidateIntersectionAABBEXT) continue;
     uint tri = uint(rayQueryGetIntersectionPrimitiveIndexEXT(rq, false));
+    if (tri == skip) continue;
     vec3 x = intersect_triangle_index(r, tri, tmin, tmax);
     if (x.x >= 0.0 && closer(x.x, tri, h)) {
       // Committing lets the traversal skip boxes beyond t; a box whose triangle ties at t still
@@ -114,14 +118,16 @@ Hit trace_closest(vec3 o, vec3 d, float tmin, float tmax) {
   return h;
 }
 
-bool trace_any(vec3 o, vec3 d, float tmin, float tmax) {
+bool trace_any(vec3 o, vec3 d, float tmin, float tmax, uint skip) {
   ShearedRay r = shear_ray(o, d);
   bool hit = false;
   rayQueryEXT rq;
   rayQueryInitializeEXT(rq, scene, gl_RayFlagsTerminateOnFirstHitEXT, 0xFF, o, tmin, d, tmax);
   while (rayQueryProceedEXT(rq)) {
     if (rayQueryGetIntersectionTypeEXT(rq, false) != gl_RayQueryCandidateIntersectionAABBEXT) continue;
-    vec3 x = intersect_triangle_index(r, uint(rayQueryGetIntersectionPrimitiveIndexEXT(rq, false)), tmin, tmax);
+    uint tri = uint(rayQueryGetIntersectionPrimitiveIndexEXT(rq, false));
+    if (tri == skip) continue;
+    vec3 x = intersect_triangle_index(r, tri, tmin, tmax);
     if (x.x >= 0.0) {
       rayQueryGenerateIntersectionEXT(rq, x.x);
       hit = true;
@@ -153,7 +159,7 @@ vec3 safe_inverse(vec3 d) {
 }
 
 // any_hit: stop at the first hit found.
-Hit traverse(vec3 o, vec3 d, float tmin, float tmax, bool any_hit) {
+Hit traverse(vec3 o, vec3 d, float tmin, float tmax, uint skip, bool any_hit) {
   Hit h = no_hit(tmax);
   ShearedRay r = shear_ray(o, d);
   vec3 inv_d = safe_inverse(d);
@@ -166,6 +172,7 @@ Hit traverse(vec3 o, vec3 d, float tmin, float tmax, bool any_hit) {
     if (count > 0u) {
       for (uint i = 0u; i < count; ++i) {
         uint tri = bvh_triangles.values[first + i];
+        if (tri == skip) continue;
         vec3 x = intersect_triangle_index(r, tri, tmin, tmax);
         if (x.x >= 0.0 && closer(x.x, tri, h)) {
           h.hit = true;
@@ -206,9 +213,9 @@ Hit traverse(vec3 o, vec3 d, float tmin, float tmax, bool any_hit) {
   return h;
 }
 
-Hit trace_closest(vec3 o, vec3 d, float tmin, float tmax) { return traverse(o, d, tmin, tmax, false); }
+Hit trace_closest(vec3 o, vec3 d, float tmin, float tmax, uint skip) { return traverse(o, d, tmin, tmax, skip, false); }
 
-bool trace_any(vec3 o, vec3 d, float tmin, float tmax) { return traverse(o, d, tmin, tmax, true).hit; }
+bool trace_any(vec3 o, vec3 d, float tmin, float tmax, uint skip) { return traverse(o, d, tmin, tmax, skip, true).hit; }
 
 #endif
 

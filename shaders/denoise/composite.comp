@@ -1,8 +1,9 @@
 // composite.comp: re-modulates the filtered illumination with the albedo (the inverse of the
 // path tracer's demodulation radiance / max(albedo, 1e-3)), writes HDR radiance (RGBA32F) and a
 // display image: exposure, then the ACES filmic fit of Narkowicz (2015) or a plain clamp, then the
-// sRGB transfer function, stored as RGBA8 unorm. Non-finite radiance (only possible with the raw
-// method, which skips the sanitising temporal pass) is written as 0.
+// sRGB transfer function, stored as RGBA8 unorm. Non-finite radiance (possible with the raw and
+// reference methods, which skip the sanitising temporal pass) is written as 0 and counted, so that
+// no output ever holds NaN or Inf.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -21,6 +22,13 @@ layout(set = 0, binding = 1) uniform texture2D illumination;
 layout(set = 0, binding = 2) uniform texture2D albedo;
 layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D hdr;
 layout(set = 0, binding = 4, rgba8) writeonly uniform image2D display;
+// SanitizeCounters (temporal.comp declares the same block): composite counts zeroed_outputs.
+layout(set = 0, binding = 5) buffer Counters {
+  uint nan_samples;
+  uint inf_samples;
+  uint clamped_samples;
+  uint zeroed_outputs;
+} counters;
 
 vec3 aces_narkowicz(vec3 x) {
   return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
@@ -32,8 +40,11 @@ void main() {
   ivec2 p = invocation_pixel();
   if (!inside(p, params.width, params.height)) return;
   vec3 light = texelFetch(illumination, p, 0).rgb;
-  if (any_not_finite(light)) light = vec3(0.0);
   vec3 radiance = light * max(texelFetch(albedo, p, 0).rgb, vec3(1e-3));
+  if (any_not_finite(radiance)) {
+    radiance = vec3(0.0);
+    atomicAdd(counters.zeroed_outputs, 1u);
+  }
   imageStore(hdr, p, vec4(radiance, 1.0));
   vec3 x = max(radiance * params.exposure, vec3(0.0));
   vec3 mapped = params.tonemap == 1u ? aces_narkowicz(x) : clamp(x, 0.0, 1.0);

@@ -1,7 +1,7 @@
 // temporal.comp: temporal accumulation of SVGF with A-SVGF's adaptive alpha.
 // - Sanitises the 1-spp sample: a NaN/+-Inf component drops the sample (treated as missing) and
 //   counts it in `counters` (SSBO atomics; image atomics are not portable); finite samples are
-//   clamped to [0, fp16 max].
+//   clamped to [0, fp16 max], and those above it counted.
 // - Reprojects last frame's colour, moments and history length bilinearly through the motion
 //   vector, each of the 4 taps tested for depth and normal consistency; fails (history reset) when
 //   the valid taps' bilinear weight is below 0.01 (Falcor's SVGF).
@@ -40,10 +40,13 @@ layout(set = 0, binding = 9, rgba16f) writeonly uniform image2D integrated;
 // E[l], E[l^2] and the history length n in one image: fp32 because E[l^2] leaves fp16's range
 // for l > 256, and because GLES 3.1 (ESSL target) can store neither rg32f nor r16f.
 layout(set = 0, binding = 10, rgba32f) writeonly uniform image2D moments;
-// Samples dropped since the buffer was cleared: [0] with a NaN component, [1] with an Inf (no NaN).
+// Since the buffer was cleared: samples dropped with a NaN component, with an Inf (no NaN), finite
+// samples clamped to the fp16 maximum, and output pixels composite wrote as 0 (SanitizeCounters).
 layout(set = 0, binding = 11) buffer Counters {
   uint nan_samples;
   uint inf_samples;
+  uint clamped_samples;
+  uint zeroed_outputs;
 } counters;
 
 struct History {
@@ -118,6 +121,7 @@ void main() {
     m = h.valid ? h.moments : vec2(0.0);
     n = h.valid ? min(h.len, params.history_cap) : 0.0;
   } else {
+    if (any(greaterThan(sample_rgb, vec3(kFp16Max)))) atomicAdd(counters.clamped_samples, 1u);
     vec3 c = clamp_sample(sample_rgb);
     float l = luminance(c);
     vec2 cm = vec2(l, l * l);

@@ -48,7 +48,7 @@ void main() {
   vec3 o = cam.position.xyz;
   vec3 d = camera_ray(cam, centre, params.width, params.height);
 
-  Hit h = trace_closest(o, d, 0.0, 1e30);
+  Hit h = trace_closest(o, d, 0.0, 1e30, kNoTriangle);
   float t_sphere;
   int sphere = hit_sphere_lights(o, d, 0.0, h.hit ? h.t : 1e30, params.sphere_count, t_sphere);
 
@@ -78,7 +78,7 @@ void main() {
     float gx = abs(plane_depth(centre + vec2(1.0, 0.0), x, n) - z);
     float gy = abs(plane_depth(centre + vec2(0.0, 1.0), x, n) - z);
     dn = vec4(z, max(gx, gy), encode_normal(n));
-    alb = vec4(surface_albedo(h.triangle, h.bary), 1.0);
+    alb = vec4(demodulation_albedo(h.triangle, h.bary), 1.0);
     prev_point = previous_triangles.values[h.triangle].p0 * (1.0 - h.bary.x - h.bary.y) +
                  previous_triangles.values[h.triangle].p1 * h.bary.x + previous_triangles.values[h.triangle].p2 * h.bary.y;
   } else {

@@ -1,8 +1,8 @@
 // pathtrace: 1 spp (or `spp` for references) of diffuse path tracing from the primary hit in the
 // visibility buffer: next-event estimation to sphere lights and emissive triangles combined with
 // cosine-weighted BSDF sampling by multiple importance sampling (power heuristic), Russian
-// roulette after two bounces. Writes demodulated illumination (radiance / albedo, guarded) and
-// the random seed each pixel used. With GRADIENT_SAMPLES, pixels that gradient_select gave a
+// roulette after two bounces. Writes demodulated illumination (radiance / demodulation_albedo,
+// guarded) and the random seed each pixel used. With GRADIENT_SAMPLES, pixels that gradient_select gave a
 // carried seed start from last frame's surface point with last frame's seed instead.
 #version 460
 #extension GL_GOOGLE_include_directive : require
@@ -46,10 +46,52 @@ const float kAlbedoGuard = 1e-3;
 
 vec3 triangle_normal(Triangle t) { return normalize(cross(t.p1 - t.p0, t.p2 - t.p0)); }
 
-float ray_offset(vec3 x) { return 1e-4 * (1.0 + max(abs(x.x), max(abs(x.y), abs(x.z)))); }
+// Where rays leave a surface point, independent of the scene's scale. The method: the offset of
+// Waechter and Binder ("A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems,
+// ch. 6, 2019) is 256 float ulps of the point's own coordinates along the geometric normal, plus an
+// absolute fallback near the origin (1/65536 world units under 1/32), and that absolute constant
+// makes it scale-dependent (a room scaled by 1e-4 is 5e-4 units wide). We measure the ulps on the
+// triangle instead: the point is interpolated from the vertices, so its error is bounded by a few
+// ulps of the largest vertex coordinate (Pharr, Jakob and Humphreys, "Physically Based Rendering",
+// 3rd ed., sec. 3.9), whatever the point's own magnitude, and
+//   eps = 2^-18 max|vertex coordinate|   (>= 32 ulps of that coordinate, no absolute term)
+// scales exactly with the scene. Three parts:
+// 1. the point is re-interpolated from the barycentrics (not o + t d, whose error grows with t);
+// 2. it moves towards the centroid until it is at least kEdgeOffsets * eps inside every edge: a
+//    point on the crease where a ceiling meets a wall would otherwise stay on the wall's plane, and
+//    a ray from it would leave through the wall (light leaked into closed rooms along such edges);
+//    at a crease of interior angle a this leaves the point inside the neighbour by
+//    eps (kEdgeOffsets sin a - cos a) > 0 for a > 14 degrees;
+// 3. it moves eps along the normal (n faces the side the ray leaves to);
+// and the ray skips its own triangle (trace.glsl's `skip`).
+const float kSpawnOffsetRel = 1.0 / 262144.0;  // 2^-18
+const float kEdgeOffsets = 4.0;
 
-// Radiance arriving at x (normal n, facing the incoming side) from one light sample, MIS-weighted
-// against BSDF sampling. Skips the emissive triangle `self` (no self-illumination).
+float spawn_eps(Triangle t) {
+  vec3 m = max(abs(t.p0), max(abs(t.p1), abs(t.p2)));
+  return kSpawnOffsetRel * max(m.x, max(m.y, m.z));
+}
+
+vec3 spawn_origin(Triangle t, vec2 b, vec3 n) {
+  vec3 x = t.p0 * (1.0 - b.x - b.y) + t.p1 * b.x + t.p2 * b.y;
+  float eps = spawn_eps(t);
+  // Moving a fraction s of the way to the centroid leaves every barycentric >= s/3, i.e. the point
+  // >= s/3 of the smallest altitude (twice the area over the longest edge) inside every edge.
+  vec3 e0 = t.p1 - t.p0, e1 = t.p2 - t.p1, e2 = t.p0 - t.p2;
+  float longest = sqrt(max(dot(e0, e0), max(dot(e1, e1), dot(e2, e2))));
+  float altitude = length(cross(e0, -e2)) / max(longest, 1e-30);
+  float s = altitude > 0.0 ? min(0.5, 3.0 * kEdgeOffsets * eps / altitude) : 0.0;
+  vec3 centre = (t.p0 + t.p1 + t.p2) / 3.0;
+  return mix(x, centre, s) + n * eps;
+}
+
+// Shadow rays stop this fraction short of the light sample: the sample lies on the light, whose own
+// test may round either way (relative, so independent of scale too).
+const float kShadowEnd = 1.0 - 1.0 / 4096.0;
+
+// Radiance arriving at a surface point (normal n, facing the incoming side) from one light sample,
+// MIS-weighted against BSDF sampling; x is the point's spawn_origin. Skips the emissive triangle
+// `self` (no self-illumination); shadow rays skip it too.
 vec3 sample_light(vec3 x, vec3 n, uint self, inout uint state) {
   if (params.light_count == 0u) return vec3(0.0);
   // Pick a light by its probability (power).
@@ -94,13 +136,11 @@ vec3 sample_light(vec3 x, vec3 n, uint self, inout uint state) {
     float cos_light = abs(dot(triangle_normal(t), dir));
     if (cos_light <= 0.0 || l.area <= 0.0) return vec3(0.0);
     pdf_light = l.pdf * d2 / (l.area * cos_light);
-    dist *= 0.9999;
   }
   float cos_x = dot(n, dir);
   if (cos_x <= 0.0) return vec3(0.0);
-  float eps = ray_offset(x);
   rays_traced += 1u;
-  if (trace_any(x + n * eps, dir, 0.0, dist - eps)) return vec3(0.0);
+  if (trace_any(x, dir, 0.0, dist * kShadowEnd, self)) return vec3(0.0);
   float pdf_bsdf = cos_x / kPi;
   float w = power_heuristic(pdf_light, pdf_bsdf);
   // f = albedo / pi is applied by the caller (throughput); here: Le * cos / pdf * weight / pi.
@@ -120,21 +160,22 @@ float emissive_triangle_pdf(uint tri, vec3 x, vec3 dir, float t) {
   return 0.0;
 }
 
-// One path from a known first surface point; returns radiance towards the camera.
-vec3 trace_path(vec3 x, vec3 n, uint tri, vec3 albedo, vec3 emission, inout uint state) {
+// One path from a known first surface point (triangle tri at barycentrics b, normal n facing the
+// viewer); returns radiance towards the camera.
+vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 albedo, vec3 emission, inout uint state) {
   vec3 radiance = emission;
   vec3 throughput = vec3(1.0);
   for (uint bounce = 0u; bounce < params.max_bounces; ++bounce) {
-    radiance += throughput * albedo * sample_light(x, n, tri, state);
+    vec3 o = spawn_origin(load_triangle(tri), b, n);
+    radiance += throughput * albedo * sample_light(o, n, tri, state);
     // BSDF sample: cosine-weighted, so f * cos / pdf = albedo.
     float u1 = next_random(state);
     float u2 = next_random(state);
     vec3 dir = sample_cosine(n, u1, u2);
     float pdf_bsdf = max(dot(n, dir), 0.0) / kPi;
     throughput *= albedo;
-    vec3 o = x + n * ray_offset(x);
     rays_traced += 1u;
-    Hit h = trace_closest(o, dir, 0.0, 1e30);
+    Hit h = trace_closest(o, dir, 0.0, 1e30, tri);
     float t_sphere;
     int sphere = hit_sphere_lights(o, dir, 0.0, h.hit ? h.t : 1e30, params.sphere_count, t_sphere);
     if (sphere >= 0) {
@@ -151,10 +192,10 @@ vec3 trace_path(vec3 x, vec3 n, uint tri, vec3 albedo, vec3 emission, inout uint
       float pdf_light = emissive_triangle_pdf(h.triangle, o, dir, h.t);
       radiance += throughput * m.emission.rgb * power_heuristic(pdf_bsdf, pdf_light);
     }
-    x = o + h.t * dir;
     n = triangle_normal(t);
     if (dot(n, dir) > 0.0) n = -n;
     tri = h.triangle;
+    b = h.bary;
     albedo = surface_albedo(h.triangle, h.bary);
     // Russian roulette after two bounces, by the throughput's largest component.
     if (bounce >= 1u) {
@@ -182,7 +223,7 @@ void main() {
   }
 #endif
   vec3 radiance = vec3(0.0);
-  vec3 albedo = vec3(1.0);
+  vec3 demodulation = vec3(1.0);
   if (vis.x == 0xFFFFFFFFu) {
     radiance = lights.values[vis.y].emission;  // a sphere light seen directly
   } else if (vis.x != 0u) {
@@ -191,15 +232,16 @@ void main() {
     vec3 x = t.p0 * (1.0 - b.x - b.y) + t.p1 * b.x + t.p2 * b.y;
     vec3 n = triangle_normal(t);
     if (dot(n, x - cam.position.xyz) > 0.0) n = -n;
-    albedo = surface_albedo(vis.y, b);
+    vec3 albedo = surface_albedo(vis.y, b);
+    demodulation = demodulation_albedo(vis.y, b);
     vec3 emission = materials.values[t.material].emission.rgb;
     for (uint s = 0u; s < params.spp; ++s) {
       uint state = s == 0u ? seed : pcg_hash(seed + s);
-      radiance += trace_path(x, n, vis.y, albedo, emission, state);
+      radiance += trace_path(vis.y, b, n, albedo, emission, state);
     }
     radiance /= float(max(params.spp, 1u));
   }
-  imageStore(illumination, p, vec4(radiance / max(albedo, vec3(kAlbedoGuard)), 0.0));
+  imageStore(illumination, p, vec4(radiance / max(demodulation, vec3(kAlbedoGuard)), 0.0));
   imageStore(rng_seed, p, uvec4(seed));
   if (rays_traced > 0u) atomicAdd(ray_counter.count, rays_traced);
 }

@@ -65,6 +65,14 @@ vec3 surface_albedo(uint tri, vec2 bary) {
   return a.rgb * srgb_to_linear(srgb);
 }
 
+// The albedo the denoiser divides illumination by and composite multiplies back: the surface's, but
+// 1 on emitters, whose emitted radiance is not reflectance-modulated; dividing it by a dark albedo
+// would push a valid emission (<= 65504) past what the fp16 histories hold.
+vec3 demodulation_albedo(uint tri, vec2 bary) {
+  if (materials.values[triangles.values[tri].material].emission.a > 0.0) return vec3(1.0);
+  return surface_albedo(tri, bary);
+}
+
 #include "common/trace.glsl"
 
 #endif

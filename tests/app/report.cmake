@@ -18,6 +18,9 @@ asvgf_add_cli_test("asvgf report --methods restricts the runs and says where the
 asvgf_add_cli_test("asvgf report --timing separate times every frame in a back-to-back pass and says so" LABEL app EXIT 0
                    MATCH "rendered a second time for timing"
                    COMMAND bash -c "rm -rf ${report_dir}/timing && $<TARGET_FILE:asvgf> report ${report_tiny_args} --methods asvgf,accum --timing separate --out ${report_dir}/timing && ${report_check} check ${report_dir}/timing asvgf,accum-1spp,accum-4spp && ${report_check} timed ${report_dir}/timing && grep -o 'rendered a second time for timing' ${report_dir}/timing/report.md")
+asvgf_add_cli_test("asvgf report on the static room gives every run an energy bias (ema-0.05 saturates after 20 of 24 frames), as report.csv's means say" LABEL app EXIT 0
+                   MATCH "report_check: ok: energy bias of 10 runs"
+                   COMMAND bash -c "rm -rf ${report_dir}/energy && $<TARGET_FILE:asvgf> report --size 24x24 --frames 24 --reference-spp 32 --max-accumulation-spp 4 --quiet --animation static --out ${report_dir}/energy && ${report_check} energy ${report_dir}/energy")
 asvgf_add_cli_test("asvgf report rejects an unknown --methods entry with exit 2" LABEL app EXIT 2 MATCH "--methods.*magic"
                    COMMAND ${asvgf} report --methods asvgf,magic --out ${report_dir}/never)
 asvgf_add_cli_test("asvgf report rejects an impossible size with exit 2" LABEL app EXIT 2 MATCH "size"

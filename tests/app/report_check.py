@@ -7,6 +7,9 @@
   report_check.py same DIR1 DIR2           report.csv equal except the GPU-time columns (*_ms)
   report_check.py differ DIR1 DIR2         the error columns differ (another seed)
   report_check.py timed DIR                every row has a positive whole-frame GPU time
+  report_check.py energy DIR               report.md's energy bias is a number for every run, and for
+                                           runs without a history (raw, accum-*) the ratio of
+                                           report.csv's mean to reference_mean over all frames, minus 1
 """
 import csv
 import math
@@ -183,11 +186,38 @@ def timed(directory):
     print("report_check: ok: %d rows timed" % len(rows))
 
 
+def energy(directory):
+    rows = read_csv(directory)
+    md = open(os.path.join(directory, "report.md"), encoding="utf-8").read()
+    header = next((l for l in md.splitlines() if l.startswith("| run |") and "energy bias" in l), None)
+    if header is None:
+        fail("report.md has no run table with an energy bias column")
+    col = [c.strip() for c in header.split("|")].index("energy bias")
+    shown = {}
+    for line in md.splitlines():
+        cells = [c.strip() for c in line.split("|")]
+        if len(cells) > col and cells[1].startswith("`") and "%" in cells[col]:
+            shown[cells[1].strip("`")] = float(cells[col].split("%")[0])
+    runs = {r["run"] for r in rows}
+    for name in sorted(runs):
+        if name not in shown:
+            fail("run %s has no energy bias in report.md" % name)
+        if name == "raw" or name.startswith("accum-"):
+            rs = [r for r in rows if r["run"] == name and float(r["reference_mean"]) > 0]
+            want = 100.0 * (sum(float(r["mean"]) for r in rs) / sum(float(r["reference_mean"]) for r in rs) - 1.0)
+            if abs(want - shown[name]) > 0.006:
+                fail("%s: energy bias %.2f%% in report.md, %.4f%% from report.csv" % (name, shown[name], want))
+    print("report_check: ok: energy bias of %d runs: %s" % (len(shown), ", ".join(
+        "%s %+.2f%%" % (n, shown[n]) for n in sorted(shown))))
+
+
 if __name__ == "__main__":
     if len(sys.argv) >= 3 and sys.argv[1] == "check":
         check(sys.argv[2], sys.argv[3].split(",") if len(sys.argv) > 3 and sys.argv[3] else [])
     elif len(sys.argv) == 3 and sys.argv[1] == "timed":
         timed(sys.argv[2])
+    elif len(sys.argv) == 3 and sys.argv[1] == "energy":
+        energy(sys.argv[2])
     elif len(sys.argv) == 4 and sys.argv[1] in ("same", "differ"):
         (same if sys.argv[1] == "same" else differ)(sys.argv[2], sys.argv[3])
     else:

@@ -71,7 +71,8 @@ class DenoiserChain {
     }
     const auto hdr = g.add_image("hdr", w, h, Format::RGBA32F);
     const auto display = g.add_image("display", w, h, Format::RGBA8Unorm);
-    composite_.add(g, {filtered, harness_.input(g, "albedo", in.albedo, Format::RGBA16F), hdr, display}, settings_);
+    composite_.add(g, {filtered, harness_.input(g, "albedo", in.albedo, Format::RGBA16F), hdr, display, t.counters},
+                   settings_);
     FrameOutput out;
     harness_.readback(g, hdr, &out.hdr);
     harness_.readback(g, display, &out.display);

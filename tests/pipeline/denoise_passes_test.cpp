@@ -290,9 +290,10 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
   }
 }
 
-TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and ACES tone curves)") {
+TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and ACES tone curves), zeroes and counts non-finite radiance") {
   ValidatedDevice device;
   passes::CompositePass pass(*device);
+  passes::SanitizeCounters counters(*device);
   for (const auto tonemap : {passes::Tonemap::Clamp, passes::Tonemap::Aces}) {
     const int w = 17, h = 13;
     Random r(91);
@@ -300,6 +301,7 @@ TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and A
     ImageD albedo = random_color(r, w, h, 0, 1, 1);
     albedo.at(3, 3, 0) = 0;  // the demodulation guard
     illumination.at(4, 4, 1) = std::numeric_limits<double>::quiet_NaN();
+    illumination.at(5, 2, 0) = std::numeric_limits<double>::infinity();
     passes::DenoiseSettings settings;
     settings.tonemap = tonemap;
     settings.exposure = 1.5f;
@@ -308,7 +310,7 @@ TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and A
     const auto hdr = g.add_image("hdr", w, h, F::RGBA32F);
     const auto display = g.add_image("display", w, h, F::RGBA8Unorm);
     pass.add(g, {harness.input(g, "illumination", illumination, F::RGBA32F), harness.input(g, "albedo", albedo, F::RGBA16F),
-                 hdr, display},
+                 hdr, display, counters.import(g)},
              settings);
     ImageD got_hdr, got_display;
     harness.readback(g, hdr, &got_hdr);
@@ -319,5 +321,10 @@ TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and A
     DENOISE_CHECK_CLOSE(compare(got_hdr, want.hdr, 4, fp32_tolerance(3)), "composite hdr");
     DENOISE_CHECK_CLOSE(compare(got_display, want.display, 4, [](double) { return 1.0 / 255.0; }), "composite display");
     CHECK(got_hdr.at(4, 4, 1) == 0.0);
+    CHECK(got_hdr.at(5, 2, 0) == 0.0);
   }
+  // Two non-finite pixels a frame, two frames; nothing else.
+  const auto counts = counters.read();
+  CHECK(counts.zeroed_outputs == 4);
+  CHECK(counts.clamped_samples == 0);
 }

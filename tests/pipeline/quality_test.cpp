@@ -3,6 +3,8 @@
 // of constant against adaptive alpha once the light has left the room.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include "render/metrics.hpp"
 #include "render/renderer.hpp"
 #include "scene/builtin.hpp"
@@ -64,7 +66,10 @@ TEST_CASE("quality on light-exit: asvgf recovers in a third of svgf's frames, em
   // The light stops outside the room at frame 9 and nothing moves after it, so one reference
   // serves every frame from 9 on. A method's steady error: the mean relMSE of frames 35..39 of a
   // fresh run that starts at frame 9 (the final, static scene, no stale light in any history).
-  // Its lag: frames after 9 until the error of the full run is first under twice that.
+  // Its lag: frames after 9 until the error of the full run is first under twice that, or under
+  // 1e-4. The room is exactly dark once the light is outside (no path brings light in; see
+  // frame_inputs_test), so the reference is 0 and a converged method's steady error is 0 too: the
+  // floor is relMSE 1e-4 against black, i.e. radiance about 1e-3 where the lit room had ~1.
   ValidatedDevice device;
   const auto scene = scene::builtin_scene("cornell", "light-exit");
   const int settled = 9, horizon = 60;
@@ -86,7 +91,7 @@ TEST_CASE("quality on light-exit: asvgf recovers in a third of svgf's frames, em
       if (f < settled) continue;
       const double e = render::relative_mse(img.hdr, ref);
       if (f == settled) at_settled = e;
-      if (e < 2.0 * steady) {
+      if (e <= std::max(2.0 * steady, 1e-4)) {
         frames = f - settled;
         break;
       }

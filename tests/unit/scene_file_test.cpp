@@ -340,3 +340,41 @@ TEST_CASE("scene file: bad glTF files name the JSON place, the glTF file and the
     check_error(tmp.write("s.json", with_gltf("gone.glb")), {"gone.glb", "no such file"});
   }
 }
+
+TEST_CASE("scene file: emission beyond 65504 and coordinates beyond 2^30 are errors naming the file and the object") {
+  Scratch tmp;
+  const std::string tri = R"({"name": "tri", "material": "white", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]})";
+  SUBCASE("material emission above the fp16 histories' range") {
+    check_error(tmp.write("s.json", R"({"materials": [{"name": "white"}, {"name": "sun", "emission": [1e5, 1, 1]}],
+                                       "meshes": [{"name": "tri", "material": "sun", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]}],
+                                       "instances": [{"mesh": "tri"}], "camera": {"position": [0,0,1], "target": [0,0,0]}})"),
+                {"s.json: material 'sun' (#1): emission (100000, 1, 1)", "65504"});
+  }
+  SUBCASE("the largest valid emission loads") {
+    CHECK(error_of(tmp.write("s.json", R"({"materials": [{"name": "white", "emission": [65504, 65504, 0]}],
+                                          "meshes": [)" + tri + R"(], "instances": [{"mesh": "tri"}],
+                                          "camera": {"position": [0,0,1], "target": [0,0,0]}})")) == "");
+  }
+  SUBCASE("sphere light emission above the range") {
+    check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "tri"})", R"(, "lights": [{"name": "bulb", "position": [0,1,0], "radius": 0.1, "emission": [4e11, 4e11, 4e11]}])")),
+                {"s.json: sphere light 'bulb' (#0): keyframe 0: emission", "65504"});
+  }
+  SUBCASE("a vertex beyond 2^30") {
+    check_error(tmp.write("s.json", scene_json(R"({"name": "far", "material": "white", "positions": [[0,0,0],[1,0,0],[0,1e10,0]], "indices": [[0,1,2]]})",
+                                               R"({"name": "far_instance", "mesh": "far"})")),
+                {"s.json: instance 'far_instance' (#0): keyframe 0: mesh 'far' (#0) vertex 2 lands at (0, 1e+10, 0)", "2^30"});
+  }
+  SUBCASE("a vertex moved beyond 2^30 by its instance's transform") {
+    check_error(tmp.write("s.json", scene_json(tri, R"({"name": "moved", "mesh": "tri", "keyframes": [{"frame": 0}, {"frame": 5, "translation": [0, 0, -2e9]}]})")),
+                {"instance 'moved' (#0): keyframe 1: mesh 'tri' (#0) vertex 0", "2^30"});
+  }
+  SUBCASE("a sphere light reaching beyond 2^30") {
+    check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "tri"})", R"(, "lights": [{"position": [1073741800,0,0], "radius": 100, "emission": [1,1,1]}])")),
+                {"sphere light 'light0' (#0): keyframe 0: the sphere at", "2^30"});
+  }
+  SUBCASE("a camera beyond 2^30") {
+    check_error(tmp.write("s.json", R"({"materials": [{"name": "white"}], "meshes": [)" + tri + R"(], "instances": [{"mesh": "tri"}],
+                                       "camera": {"position": [0,0,3e9], "target": [0,0,0]}})"),
+                {"camera: keyframe 0: position (0, 0, 3e+09)", "2^30"});
+  }
+}
