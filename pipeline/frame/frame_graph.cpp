@@ -77,16 +77,11 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
                         rays, {s.frame, s.seed, s.max_bounces, s.spp}, w, h);
   if (adaptive) {
     // Declared on still frames too, so that dump() shows them left out with the reason.
-    auto skip_if_still = [&] {
-      if (!gradients) g.passes().back().skip_reason = not_moved;
-    };
     ResourceId current = g.add_image("gradient", gw, gh, F::RGBA16F);
-    gradient_.add(g, {illumination, gradient_prev, current});
-    skip_if_still();
+    gradient_.add(g, {illumination, gradient_prev, current}).skip_if(!gradients, not_moved);
     for (int i = 0; i < denoise.gradient_iterations; ++i) {
       const ResourceId next = g.add_image("gradient." + std::to_string(i + 1), gw, gh, F::RGBA16F);
-      gradient_atrous_.add(g, {current, depth_normal, next}, i, denoise);
-      skip_if_still();
+      gradient_atrous_.add(g, {current, depth_normal, next}, i, denoise).skip_if(!gradients, not_moved);
       current = next;
     }
     if (gradients) gradient_final = current;

@@ -52,12 +52,11 @@ void AtrousPass::add(graph::RenderGraph& graph, const Resources& r, int iteratio
                    s.sigma_z, s.sigma_n,   s.sigma_l};
   std::vector<Binding> bindings{{"color_in", r.color_in},
                                 {"depth_normal", r.depth_normal},
-                                {"color_out", r.color_out, graph::Use::ShaderWrite}};
-  if (r.color_history) bindings.push_back({"color_history", *r.color_history, graph::Use::ShaderWrite});
-  const hal::ShaderInfo& shader = asvgf::shaders::atrous_plain;  // same workgroup size in both variants
-  add_compute_pass(graph, "atrous." + std::to_string(iteration + 1), r.color_history ? history_ : plain_,
-                   std::move(bindings), to_bytes(u),
-                   {group_count(shader, 0, u.width), group_count(shader, 1, u.height), 1});
+                                {"color_out", r.color_out}};
+  if (r.color_history) bindings.push_back({"color_history", *r.color_history});
+  const hal::ShaderInfo& shader = r.color_history ? asvgf::shaders::atrous_history : asvgf::shaders::atrous_plain;
+  add_compute_pass(graph, "atrous." + std::to_string(iteration + 1), shader, r.color_history ? history_ : plain_,
+                   std::move(bindings), to_bytes(u), {u.width, u.height, 1});
 }
 
 graph::ResourceId AtrousPass::add_iterations(graph::RenderGraph& graph, graph::ResourceId input,

@@ -34,13 +34,13 @@ void CompositePass::add(graph::RenderGraph& graph, const Resources& r, const Den
   const auto& decl = graph.resource(r.hdr);
   const Uniforms u{decl.width, decl.height, s.exposure, static_cast<std::uint32_t>(s.tonemap)};
   const hal::ShaderInfo& shader = asvgf::shaders::composite;
-  add_compute_pass(graph, "composite", pipeline_,
+  add_compute_pass(graph, "composite", shader, pipeline_,
                    {{"illumination", r.illumination},
                     {"albedo", r.albedo},
-                    {"hdr", r.hdr, graph::Use::ShaderWrite},
-                    {"display", r.display, graph::Use::ShaderWrite},
-                    {"counters", r.counters, graph::Use::ShaderReadWrite}},
-                   to_bytes(u), {group_count(shader, 0, u.width), group_count(shader, 1, u.height), 1});
+                    {"hdr", r.hdr},
+                    {"display", r.display},
+                    {"counters", r.counters}},
+                   to_bytes(u), {u.width, u.height, 1});
 }
 
 }  // namespace asvgf::passes

@@ -1,6 +1,9 @@
 // passes/compute_pass.hpp: what every compute pass shares: pipelines made from the generated shader
 // headers (checked against the C++ uniform struct), and declaring a dispatch in the render graph
-// from one binding list, so that what the graph knows and what the shader binds cannot drift.
+// from one binding list, so that what the graph knows and what the shader binds cannot drift:
+// whether a binding is read or written comes from the shader's reflection, every name must be one
+// of the shader's bindings and every shader binding must be bound, and the workgroup counts come
+// from the shader's workgroup size.
 #pragma once
 
 #include <array>
@@ -34,8 +37,7 @@ class PipelineCache {
 struct Binding {
   std::string name;  // the shader's binding name
   graph::ResourceId resource = 0;
-  graph::Use use = graph::Use::ShaderRead;
-  bool history = false;  // bind last frame's version
+  bool history = false;  // bind last frame's version (the shader must only read it)
 };
 
 template <typename T>
@@ -45,11 +47,17 @@ std::vector<std::byte> to_bytes(const T& value) {
   return bytes;
 }
 
-inline std::uint32_t groups_for(std::uint32_t size, std::uint32_t group) { return (size + group - 1) / group; }
+inline std::uint32_t groups_for(std::uint32_t size, std::uint32_t group) {
+  return (size + group - 1) / group;
+}
 
-// Declares every binding in the graph and dispatches `pipeline` with them and `uniforms`.
-graph::PassBuilder add_compute_pass(graph::RenderGraph& graph, const std::string& name, hal::PipelineHandle pipeline,
-                                    std::vector<Binding> bindings, std::vector<std::byte> uniforms,
-                                    std::array<std::uint32_t, 3> groups);
+// Declares every binding in the graph, with the use its reflection gives (read, write, read-write,
+// acceleration-structure read), and dispatches `pipeline` (made from `shader`) with them and
+// `uniforms` over `invocations` threads per axis (the groups cover them). Throws
+// hal::Error(BindingMismatch) naming the pass, the shader and the binding when a name is not one of
+// the shader's bindings, a shader binding is left unbound, or a history binding is written.
+graph::PassBuilder add_compute_pass(graph::RenderGraph& graph, const std::string& name, const hal::ShaderInfo& shader,
+                                    hal::PipelineHandle pipeline, std::vector<Binding> bindings,
+                                    std::vector<std::byte> uniforms, std::array<std::uint32_t, 3> invocations);
 
 }  // namespace asvgf::passes

@@ -16,8 +16,6 @@
 namespace asvgf::passes {
 namespace {
 
-using graph::Use;
-
 struct GbufferParams {
   render::GpuCamera camera, previous_camera;
   std::uint32_t width, height, sphere_count, pad;
@@ -50,15 +48,13 @@ std::vector<Binding> scene_bindings(const SceneInputs& s, const hal::ShaderInfo&
                               {"lights", s.lights},
                               {"triangle_uvs", s.triangle_uvs},
                               {"texels", s.texels}};
-  if (s.ray_query) all.push_back({"scene", s.tlas, Use::AccelRead});
+  if (s.ray_query) all.push_back({"scene", s.tlas});
   else all.insert(all.end(), {{"bvh_nodes", s.bvh_nodes}, {"bvh_triangles", s.bvh_triangles}});
   std::vector<Binding> used;
   for (auto& b : all)
     if (shader.find(b.name)) used.push_back(std::move(b));
   return used;
 }
-
-std::array<std::uint32_t, 3> groups_2d(std::uint32_t w, std::uint32_t h) { return {groups_for(w, 8), groups_for(h, 8), 1}; }
 
 }  // namespace
 
@@ -91,12 +87,12 @@ void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const Scen
   const hal::ShaderInfo& shader = scene.ray_query ? shaders::gbuffer_rayquery : shaders::gbuffer_software;
   const GbufferParams params{scene.camera, scene.previous_camera, width, height, scene.sphere_count, 0};
   auto bindings = scene_bindings(scene, shader);
-  bindings.insert(bindings.end(), {{"visibility", t.visibility, Use::ShaderWrite},
-                                   {"depth_normal", t.depth_normal, Use::ShaderWrite},
-                                   {"motion", t.motion, Use::ShaderWrite},
-                                   {"albedo", t.albedo, Use::ShaderWrite}});
-  add_compute_pass(graph, "gbuffer", pipelines.get(shader, sizeof(params)), std::move(bindings), to_bytes(params),
-                   groups_2d(width, height));
+  bindings.insert(bindings.end(), {{"visibility", t.visibility},
+                                   {"depth_normal", t.depth_normal},
+                                   {"motion", t.motion},
+                                   {"albedo", t.albedo}});
+  add_compute_pass(graph, "gbuffer", shader, pipelines.get(shader, sizeof(params)), std::move(bindings), to_bytes(params),
+                   {width, height, 1});
 }
 
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
@@ -111,12 +107,12 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
                                s.max_bounces, s.spp};
   auto bindings = scene_bindings(scene, shader);
   bindings.insert(bindings.end(), {{"visibility", visibility},
-                                   {"illumination", illumination, Use::ShaderWrite},
-                                   {"rng_seed", rng_seed, Use::ShaderWrite},
-                                   {"ray_counter", ray_counter, Use::ShaderReadWrite}});
+                                   {"illumination", illumination},
+                                   {"rng_seed", rng_seed},
+                                   {"ray_counter", ray_counter}});
   if (gradient_seeds) bindings.push_back({"gradient_seeds", *gradient_seeds});
-  add_compute_pass(graph, name, pipelines.get(shader, sizeof(params)), std::move(bindings), to_bytes(params),
-                   groups_2d(width, height));
+  add_compute_pass(graph, name, shader, pipelines.get(shader, sizeof(params)), std::move(bindings), to_bytes(params),
+                   {width, height, 1});
 }
 
 void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
@@ -124,43 +120,43 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
                          std::uint32_t height, const std::string& skip_reason) {
   const std::uint32_t sw = groups_for(width, 3), sh = groups_for(height, 3);
   const GradientClearParams clear{width, height, sw, sh};
-  add_compute_pass(graph, "gradient_clear", pipelines.get(shaders::gradient_clear, sizeof(clear)),
-                   {{"claims", t.claims, Use::ShaderWrite},
-                    {"gradient_seeds", t.gradient_seeds, Use::ShaderWrite},
-                    {"gradient_prev", t.gradient_prev, Use::ShaderWrite}},
-                   to_bytes(clear), groups_2d(sw, sh))
+  add_compute_pass(graph, "gradient_clear", shaders::gradient_clear, pipelines.get(shaders::gradient_clear, sizeof(clear)),
+                   {{"claims", t.claims},
+                    {"gradient_seeds", t.gradient_seeds},
+                    {"gradient_prev", t.gradient_prev}},
+                   to_bytes(clear), {sw, sh, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
   // Bids, then the winners write: the lowest bid wins whatever order invocations run in.
   const GradientSelectParams select{scene.camera, width, height, sw, sh, frame, 0, 0, 0};
-  add_compute_pass(graph, "gradient_select", pipelines.get(shaders::gradient_select, sizeof(select)),
+  add_compute_pass(graph, "gradient_select", shaders::gradient_select, pipelines.get(shaders::gradient_select, sizeof(select)),
                    {{"triangles", scene.triangles},
-                    {"prev_visibility", t.visibility, Use::ShaderRead, true},
+                    {"prev_visibility", t.visibility, true},
                     {"depth_normal", t.depth_normal},
-                    {"claims", t.claims, Use::ShaderReadWrite}},
-                   to_bytes(select), groups_2d(sw, sh))
+                    {"claims", t.claims}},
+                   to_bytes(select), {sw, sh, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
-  add_compute_pass(graph, "gradient_resolve", pipelines.get(shaders::gradient_resolve, sizeof(select)),
+  add_compute_pass(graph, "gradient_resolve", shaders::gradient_resolve, pipelines.get(shaders::gradient_resolve, sizeof(select)),
                    {{"triangles", scene.triangles},
-                    {"prev_visibility", t.visibility, Use::ShaderRead, true},
-                    {"prev_rng_seed", t.rng_seed, Use::ShaderRead, true},
-                    {"prev_illumination", t.illumination, Use::ShaderRead, true},
+                    {"prev_visibility", t.visibility, true},
+                    {"prev_rng_seed", t.rng_seed, true},
+                    {"prev_illumination", t.illumination, true},
                     // No depth_normal: a winner passed its tests in gradient_select already.
                     {"claims", t.claims},
                     // Written only where a sample landed: gradient_clear's values stay elsewhere.
-                    {"gradient_seeds", t.gradient_seeds, Use::ShaderReadWrite},
-                    {"gradient_prev", t.gradient_prev, Use::ShaderReadWrite}},
-                   to_bytes(select), groups_2d(sw, sh))
+                    {"gradient_seeds", t.gradient_seeds},
+                    {"gradient_prev", t.gradient_prev}},
+                   to_bytes(select), {sw, sh, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
 }
 
 void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId illumination,
                     graph::ResourceId accumulation, bool history_valid, std::uint32_t width, std::uint32_t height) {
   const AccumulateParams params{width, height, history_valid ? 1u : 0u, 0};
-  add_compute_pass(graph, "accumulate", pipelines.get(shaders::accumulate, sizeof(params)),
+  add_compute_pass(graph, "accumulate", shaders::accumulate, pipelines.get(shaders::accumulate, sizeof(params)),
                    {{"illumination", illumination},
-                    {"prev_accumulation", accumulation, Use::ShaderRead, true},
-                    {"accumulation", accumulation, Use::ShaderWrite}},
-                   to_bytes(params), groups_2d(width, height));
+                    {"prev_accumulation", accumulation, true},
+                    {"accumulation", accumulation}},
+                   to_bytes(params), {width, height, 1});
 }
 
 void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const DebugViewInputs& in, DebugView view,
@@ -169,7 +165,7 @@ void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const D
   const std::uint32_t available = (in.gradient ? 1u : 0u) | (in.moments ? 2u : 0u) | (in.variance ? 4u : 0u);
   const DebugViewParams params{width, height, static_cast<std::uint32_t>(view), 0.25f, in.alpha, in.history_cap,
                                available, 0};
-  add_compute_pass(graph, "debug_view", pipelines.get(shaders::debug_view, sizeof(params)),
+  add_compute_pass(graph, "debug_view", shaders::debug_view, pipelines.get(shaders::debug_view, sizeof(params)),
                    {{"depth_normal", in.depth_normal},
                     {"motion", in.motion},
                     {"albedo", in.albedo},
@@ -177,8 +173,8 @@ void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const D
                     {"gradient", in.gradient.value_or(in.illumination)},
                     {"moments", in.moments.value_or(in.illumination)},
                     {"variance", in.variance.value_or(in.illumination)},
-                    {"debug_view", in.target, Use::ShaderWrite}},
-                   to_bytes(params), groups_2d(width, height));
+                    {"debug_view", in.target}},
+                   to_bytes(params), {width, height, 1});
 }
 
 }  // namespace asvgf::passes

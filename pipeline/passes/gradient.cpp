@@ -28,16 +28,16 @@ GradientPass::GradientPass(hal::Device& device) : device_(device) {
 
 GradientPass::~GradientPass() { device_.destroy(pipeline_); }
 
-void GradientPass::add(graph::RenderGraph& graph, const Resources& r) const {
+graph::PassBuilder GradientPass::add(graph::RenderGraph& graph, const Resources& r) const {
   const auto& full = graph.resource(r.illumination);
   const auto& out = graph.resource(r.gradient);
   const Uniforms u{full.width, full.height, out.width, out.height};
   const hal::ShaderInfo& shader = asvgf::shaders::gradient;
-  add_compute_pass(graph, "gradient", pipeline_,
+  return add_compute_pass(graph, "gradient", shader, pipeline_,
                    {{"illumination", r.illumination}, {"gradient_prev", r.gradient_prev},
-                    {"gradient", r.gradient, graph::Use::ShaderWrite}},
+                    {"gradient", r.gradient}},
                    to_bytes(u),
-                   {group_count(shader, 0, u.gradient_width), group_count(shader, 1, u.gradient_height), 1});
+                   {u.gradient_width, u.gradient_height, 1});
 }
 
 }  // namespace asvgf::passes

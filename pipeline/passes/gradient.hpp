@@ -20,7 +20,7 @@ class GradientPass {
   GradientPass& operator=(const GradientPass&) = delete;
 
   // Adds the pass "gradient" to `graph`. The pass object must outlive the graph's execution.
-  void add(graph::RenderGraph& graph, const Resources& resources) const;
+  graph::PassBuilder add(graph::RenderGraph& graph, const Resources& resources) const;
 
  private:
   hal::Device& device_;

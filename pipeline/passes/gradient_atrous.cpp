@@ -33,17 +33,17 @@ GradientAtrousPass::GradientAtrousPass(hal::Device& device) : device_(device) {
 
 GradientAtrousPass::~GradientAtrousPass() { device_.destroy(pipeline_); }
 
-void GradientAtrousPass::add(graph::RenderGraph& graph, const Resources& r, int iteration,
-                             const DenoiseSettings& s) const {
+graph::PassBuilder GradientAtrousPass::add(graph::RenderGraph& graph, const Resources& r, int iteration,
+                                           const DenoiseSettings& s) const {
   const auto& full = graph.resource(r.depth_normal);
   const auto& out = graph.resource(r.gradient_out);
   const Uniforms u{full.width, full.height, out.width, out.height, 1 << iteration, s.sigma_z, s.sigma_n};
   const hal::ShaderInfo& shader = asvgf::shaders::gradient_atrous;
-  add_compute_pass(graph, "gradient_atrous." + std::to_string(iteration + 1), pipeline_,
+  return add_compute_pass(graph, "gradient_atrous." + std::to_string(iteration + 1), shader, pipeline_,
                    {{"gradient_in", r.gradient_in}, {"depth_normal", r.depth_normal},
-                    {"gradient_out", r.gradient_out, graph::Use::ShaderWrite}},
+                    {"gradient_out", r.gradient_out}},
                    to_bytes(u),
-                   {group_count(shader, 0, u.gradient_width), group_count(shader, 1, u.gradient_height), 1});
+                   {u.gradient_width, u.gradient_height, 1});
 }
 
 graph::ResourceId GradientAtrousPass::add_iterations(graph::RenderGraph& graph, graph::ResourceId gradient,

@@ -22,7 +22,8 @@ class GradientAtrousPass {
   GradientAtrousPass& operator=(const GradientAtrousPass&) = delete;
 
   // Adds "gradient_atrous.<iteration + 1>" with step 2^iteration (sigma_z, sigma_n from settings).
-  void add(graph::RenderGraph& graph, const Resources& resources, int iteration, const DenoiseSettings& settings) const;
+  graph::PassBuilder add(graph::RenderGraph& graph, const Resources& resources, int iteration,
+                         const DenoiseSettings& settings) const;
   // Adds settings.gradient_iterations iterations on transient RGBA16F images named
   // "gradient.<i>"; returns the last output (`gradient` itself when there are none).
   graph::ResourceId add_iterations(graph::RenderGraph& graph, graph::ResourceId gradient, graph::ResourceId depth_normal,

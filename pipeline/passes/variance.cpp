@@ -35,12 +35,12 @@ void VariancePass::add(graph::RenderGraph& graph, const Resources& r, const Deno
   const auto& decl = graph.resource(r.color_variance);
   const Uniforms u{decl.width, decl.height, s.sigma_z, s.sigma_n, s.sigma_l, s.min_history};
   const hal::ShaderInfo& shader = asvgf::shaders::variance;
-  add_compute_pass(graph, "variance", pipeline_,
+  add_compute_pass(graph, "variance", shader, pipeline_,
                    {{"integrated", r.integrated},
                     {"moments", r.moments},
                     {"depth_normal", r.depth_normal},
-                    {"color_variance", r.color_variance, graph::Use::ShaderWrite}},
-                   to_bytes(u), {group_count(shader, 0, u.width), group_count(shader, 1, u.height), 1});
+                    {"color_variance", r.color_variance}},
+                   to_bytes(u), {u.width, u.height, 1});
 }
 
 }  // namespace asvgf::passes
