@@ -24,14 +24,7 @@ std::optional<Method> method_from_string(std::string_view name) {
 }
 
 FrameGraphBuilder::FrameGraphBuilder(hal::Device& device)
-    : pipelines_(device),
-      temporal_(device),
-      variance_(device),
-      atrous_(device),
-      gradient_(device),
-      gradient_atrous_(device),
-      composite_(device),
-      counters_(device) {}
+    : pipelines_(device), counters_(device) {}
 
 graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render::SceneGpu& scene_gpu,
                                             const FrameTargets& targets) {
@@ -63,7 +56,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const std::string not_moved = "nothing in the scene, camera or lights moved since the last frame";
   const bool adaptive = s.method == Method::Asvgf;
   const bool gradients = adaptive && s.scene_moved;
-  std::optional<ResourceId> gradient_seeds, gradient_final;
+  std::optional<ResourceId> gradient_seeds;
   ResourceId gradient_prev = 0;
   if (adaptive) {
     gradient_seeds = g.add_image("gradient_seeds", w, h, F::RGBA32Uint);
@@ -75,51 +68,20 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   }
   passes::add_pathtrace(g, pipelines_, scene, vbuffer, gradients ? gradient_seeds : std::nullopt, illumination, seeds,
                         rays, {s.frame, s.seed, s.max_bounces, s.spp}, w, h);
-  if (adaptive) {
-    // Declared on still frames too, so that dump() shows them left out with the reason.
-    ResourceId current = g.add_image("gradient", gw, gh, F::RGBA16F);
-    gradient_.add(g, {illumination, gradient_prev, current}).skip_if(!gradients, not_moved);
-    for (int i = 0; i < denoise.gradient_iterations; ++i) {
-      const ResourceId next = g.add_image("gradient." + std::to_string(i + 1), gw, gh, F::RGBA16F);
-      gradient_atrous_.add(g, {current, depth_normal, next}, i, denoise).skip_if(!gradients, not_moved);
-      current = next;
-    }
-    if (gradients) gradient_final = current;
-  }
-
-  ResourceId filtered = illumination;
-  std::optional<ResourceId> shown_moments, shown_variance;  // for the debug view
+  ResourceId input = illumination;
   if (s.method == Method::Reference) {
     const ResourceId accumulation = g.add_image("accumulation", w, h, F::RGBA32F, Lifetime::Persistent);
     passes::add_accumulate(g, pipelines_, illumination, accumulation, s.accumulation_valid, w, h);
-    filtered = accumulation;
-  } else if (s.method != Method::Raw) {
-    const ResourceId color_history = g.add_image("color_history", w, h, F::RGBA16F, Lifetime::Persistent);
-    const ResourceId moments = g.add_image("moments", w, h, F::RGBA32F, Lifetime::Persistent);
-    const bool spatial = s.method != Method::Ema && denoise.atrous_iterations > 0;
-    // Without a spatial filter the temporal result is itself next frame's colour history.
-    const ResourceId integrated = spatial ? g.add_image("integrated", w, h, F::RGBA16F) : color_history;
-    temporal_.add(g, {illumination, motion, depth_normal, color_history, moments, integrated, counters,
-                      gradient_final},
-                  denoise);
-    filtered = integrated;
-    shown_moments = moments;
-    shown_variance = integrated;
-    if (spatial) {
-      ResourceId current = g.add_image("color_variance", w, h, F::RGBA16F);
-      shown_variance = current;
-      variance_.add(g, {integrated, moments, depth_normal, current}, denoise);
-      for (int i = 0; i < denoise.atrous_iterations; ++i) {
-        const ResourceId next = g.add_image("atrous." + std::to_string(i + 1), w, h, F::RGBA16F);
-        atrous_.add(g, {current, depth_normal, next, i == denoise.history_tap ? std::optional(color_history) : std::nullopt},
-                    i, denoise);
-        current = next;
-      }
-      filtered = current;
-    }
+    input = accumulation;
   }
-
-  composite_.add(g, {filtered, albedo, hdr, display, counters}, denoise);
+  const passes::Filter filter = s.method == Method::Raw || s.method == Method::Reference ? passes::Filter::None
+                                : s.method == Method::Ema                                ? passes::Filter::Temporal
+                                                                                         : passes::Filter::Spatiotemporal;
+  const passes::DenoiserOutputs denoised = passes::add_denoiser(
+      g, pipelines_,
+      {input, motion, depth_normal, albedo, counters, hdr, display,
+       adaptive ? std::optional(gradient_prev) : std::nullopt, gradients ? "" : not_moved},
+      denoise, filter);
   g.output(hdr, hal::State::CopySrc);
   g.output(display, hal::State::CopySrc);
 
@@ -127,8 +89,8 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const ResourceId debug = targets.debug ? g.import("debug_view", targets.debug, targets.debug_state, w, h)
                                          : g.add_image("debug_view", w, h, F::RGBA8Unorm);
   passes::add_debug_view(g, pipelines_,
-                         {depth_normal, motion, albedo, illumination, debug, gradient_final, shown_moments,
-                          shown_variance, denoise.alpha, denoise.history_cap},
+                         {depth_normal, motion, albedo, illumination, debug, denoised.gradient, denoised.moments,
+                          denoised.variance, denoise.alpha, denoise.history_cap},
                          s.debug_view.value_or(passes::DebugView::Normals), w, h);
   if (s.debug_view) g.output(debug, hal::State::CopySrc);
   return g;

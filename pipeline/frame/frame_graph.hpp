@@ -15,15 +15,11 @@
 #include <string>
 
 #include "graph/render_graph.hpp"
-#include "passes/atrous.hpp"
-#include "passes/composite.hpp"
 #include "passes/compute_pass.hpp"
 #include "passes/denoise_settings.hpp"
+#include "passes/denoiser.hpp"
 #include "passes/frame_passes.hpp"
-#include "passes/gradient.hpp"
-#include "passes/gradient_atrous.hpp"
 #include "passes/temporal.hpp"
-#include "passes/variance.hpp"
 #include "render/scene_gpu.hpp"
 
 namespace asvgf::frame {
@@ -70,12 +66,6 @@ class FrameGraphBuilder {
 
  private:
   passes::PipelineCache pipelines_;
-  passes::TemporalPass temporal_;
-  passes::VariancePass variance_;
-  passes::AtrousPass atrous_;
-  passes::GradientPass gradient_;
-  passes::GradientAtrousPass gradient_atrous_;
-  passes::CompositePass composite_;
   passes::SanitizeCounters counters_;
 };
 

@@ -1,5 +1,7 @@
 #include "passes/compute_pass.hpp"
 
+#include <string>
+
 #include "hal/error.hpp"
 
 namespace asvgf::passes {
@@ -13,8 +15,39 @@ PipelineCache::~PipelineCache() {
   }
 }
 
-hal::PipelineHandle PipelineCache::get(const hal::ShaderInfo& shader, std::size_t uniform_size) {
+void check_uniform_layout(const hal::ShaderInfo& shader, std::size_t size, std::initializer_list<UniformField> fields) {
+  const std::string object(shader.name);
+  if (shader.uniform_block_size != size)
+    throw hal::Error(hal::ErrorKind::BindingMismatch, object,
+                     "uniform block is " + std::to_string(shader.uniform_block_size) + " bytes in the shader, " +
+                         std::to_string(size) + " in C++");
+  for (const UniformField& f : fields) {
+    const hal::UniformMember* found = nullptr;
+    for (const auto& m : shader.uniform_members)
+      if (m.name == f.name) found = &m;
+    if (!found)
+      throw hal::Error(hal::ErrorKind::BindingMismatch, object,
+                       "uniform member '" + std::string(f.name) + "' of the C++ struct is not in the shader");
+    if (found->offset != f.offset)
+      throw hal::Error(hal::ErrorKind::BindingMismatch, object,
+                       "uniform member '" + std::string(f.name) + "' is at offset " + std::to_string(found->offset) +
+                           " in the shader, " + std::to_string(f.offset) + " in C++");
+  }
+  if (shader.uniform_members.size() != fields.size())
+    throw hal::Error(hal::ErrorKind::BindingMismatch, object,
+                     "the shader's uniform block has " + std::to_string(shader.uniform_members.size()) +
+                         " members, the C++ struct " + std::to_string(fields.size()));
+}
+
+std::uint32_t group_count(const hal::ShaderInfo& shader, int axis, std::uint32_t extent) {
+  const std::uint32_t size = shader.workgroup_size[static_cast<std::size_t>(axis)];
+  return (extent + size - 1) / size;
+}
+
+hal::PipelineHandle PipelineCache::get(const hal::ShaderInfo& shader, std::size_t uniform_size,
+                                       std::initializer_list<UniformField> fields) {
   if (auto it = pipelines_.find(&shader); it != pipelines_.end()) return it->second;
+  if (fields.size() > 0) check_uniform_layout(shader, uniform_size, fields);
   if (uniform_size != shader.uniform_block_size)
     throw hal::Error(hal::ErrorKind::BindingMismatch, std::string(shader.name),
                      "the C++ uniform struct is " + std::to_string(uniform_size) + " bytes, the shader's block " +

@@ -7,15 +7,30 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstring>
+#include <initializer_list>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "graph/graph_runtime.hpp"
 #include "hal/device.hpp"
 
 namespace asvgf::passes {
+
+// One member of a C++ uniform struct: its GLSL name and offsetof.
+struct UniformField {
+  std::string_view name;
+  std::size_t offset;
+};
+// Throws hal::Error(BindingMismatch) naming the shader and member when the struct's size or a
+// member's offset differs from the shader's reflected uniform block.
+void check_uniform_layout(const hal::ShaderInfo& shader, std::size_t size, std::initializer_list<UniformField> fields);
+
+// Workgroups needed to cover `extent` invocations along one axis of `shader`.
+std::uint32_t group_count(const hal::ShaderInfo& shader, int axis, std::uint32_t extent);
 
 // Creates pipelines on first use and destroys them with itself.
 class PipelineCache {
@@ -25,8 +40,10 @@ class PipelineCache {
   PipelineCache(const PipelineCache&) = delete;
   PipelineCache& operator=(const PipelineCache&) = delete;
 
-  // Throws hal::Error(BindingMismatch) when `uniform_size` is not the shader's uniform block size.
-  hal::PipelineHandle get(const hal::ShaderInfo& shader, std::size_t uniform_size);
+  // Throws hal::Error(BindingMismatch) when `uniform_size` is not the shader's uniform block size,
+  // or (when `fields` are given) a member's offset differs; checked when the pipeline is created.
+  hal::PipelineHandle get(const hal::ShaderInfo& shader, std::size_t uniform_size,
+                          std::initializer_list<UniformField> fields = {});
   hal::Device& device() { return device_; }
 
  private:

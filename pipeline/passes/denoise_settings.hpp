@@ -1,5 +1,4 @@
-// passes/denoise_settings.hpp: the denoiser's parameters with their defaults and sources, and the
-// helpers every denoiser pass uses to check its uniform block against the shader's reflection.
+// passes/denoise_settings.hpp: the denoiser's parameters with their defaults and sources.
 //
 // Defaults (sources; the numbers are in ../shared/DESIGN.md "Numbers from the anchors"):
 //   alpha 0.2, moments_alpha 0.2, atrous_iterations 5, sigma_z 1, sigma_n 128, sigma_l 4, B3-spline
@@ -9,12 +8,7 @@
 //   adaptive on: A-SVGF (Schied, Peters, Dachsbacher 2018).
 #pragma once
 
-#include <cstddef>
 #include <cstdint>
-#include <initializer_list>
-#include <string_view>
-
-#include "hal/shader.hpp"
 
 namespace asvgf::passes {
 
@@ -37,17 +31,5 @@ struct DenoiseSettings {
   float exposure = 1.0f;                       // composite: multiplier before the tone curve
   Tonemap tonemap = Tonemap::Aces;             // composite: ACES fit (Narkowicz 2015)
 };
-
-// One member of a C++ uniform struct: its GLSL name and offsetof.
-struct UniformField {
-  std::string_view name;
-  std::size_t offset;
-};
-// Throws hal::Error(BindingMismatch) naming the shader and member when the struct's size or a
-// member's offset differs from the shader's reflected uniform block.
-void check_uniform_layout(const hal::ShaderInfo& shader, std::size_t size, std::initializer_list<UniformField> fields);
-
-// Workgroups needed to cover `extent` invocations along one axis of `shader`.
-std::uint32_t group_count(const hal::ShaderInfo& shader, int axis, std::uint32_t extent);
 
 }  // namespace asvgf::passes

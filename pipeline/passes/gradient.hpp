@@ -3,28 +3,16 @@
 #pragma once
 
 #include "graph/render_graph.hpp"
-#include "passes/denoise_settings.hpp"
+#include "passes/compute_pass.hpp"
 
 namespace asvgf::passes {
 
-class GradientPass {
- public:
-  struct Resources {
-    graph::ResourceId illumination = 0;   // read: w x h, this frame's demodulated samples (RGBA32F)
-    graph::ResourceId gradient_prev = 0;  // read: ceil(w/3) x ceil(h/3) RG32F (l_prev, index or -1)
-    graph::ResourceId gradient = 0;       // written: ceil(w/3) x ceil(h/3) RGBA16F (delta, Delta, 0, 0)
-  };
-  explicit GradientPass(hal::Device& device);
-  ~GradientPass();
-  GradientPass(const GradientPass&) = delete;
-  GradientPass& operator=(const GradientPass&) = delete;
-
-  // Adds the pass "gradient" to `graph`. The pass object must outlive the graph's execution.
-  graph::PassBuilder add(graph::RenderGraph& graph, const Resources& resources) const;
-
- private:
-  hal::Device& device_;
-  hal::PipelineHandle pipeline_;
+struct GradientResources {
+  graph::ResourceId illumination = 0;   // read: w x h, this frame's demodulated samples (RGBA32F)
+  graph::ResourceId gradient_prev = 0;  // read: ceil(w/3) x ceil(h/3) RG32F (l_prev, index or -1)
+  graph::ResourceId gradient = 0;       // written: ceil(w/3) x ceil(h/3) RGBA16F (delta, Delta, 0, 0)
 };
+// Adds the pass "gradient".
+graph::PassBuilder add_gradient(graph::RenderGraph& graph, PipelineCache& pipelines, const GradientResources& r);
 
 }  // namespace asvgf::passes

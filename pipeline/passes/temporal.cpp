@@ -18,8 +18,8 @@ struct Uniforms {
 };
 static_assert(sizeof(Uniforms) == 32);
 
-void check(const hal::ShaderInfo& shader) {
-  check_uniform_layout(shader, sizeof(Uniforms),
+hal::PipelineHandle pipeline_for(PipelineCache& pipelines, const hal::ShaderInfo& shader) {
+  return pipelines.get(shader, sizeof(Uniforms),
                        {{"width", offsetof(Uniforms, width)},
                         {"height", offsetof(Uniforms, height)},
                         {"gradient_width", offsetof(Uniforms, gradient_width)},
@@ -32,19 +32,8 @@ void check(const hal::ShaderInfo& shader) {
 
 }  // namespace
 
-TemporalPass::TemporalPass(hal::Device& device) : device_(device) {
-  check(asvgf::shaders::temporal_constant);
-  check(asvgf::shaders::temporal_adaptive);
-  constant_ = device_.create_pipeline({"temporal (constant alpha)", &asvgf::shaders::temporal_constant, {}});
-  adaptive_ = device_.create_pipeline({"temporal (adaptive alpha)", &asvgf::shaders::temporal_adaptive, {}});
-}
-
-TemporalPass::~TemporalPass() {
-  device_.destroy(constant_);
-  device_.destroy(adaptive_);
-}
-
-void TemporalPass::add(graph::RenderGraph& graph, const Resources& r, const DenoiseSettings& s) const {
+graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipelines, const TemporalResources& r,
+                                const DenoiseSettings& s) {
   const bool adaptive = s.adaptive && r.gradient.has_value();
   const auto& full = graph.resource(r.illumination);
   Uniforms u{full.width, full.height, 1, 1, s.alpha, s.moments_alpha, s.history_cap, 0};
@@ -53,6 +42,8 @@ void TemporalPass::add(graph::RenderGraph& graph, const Resources& r, const Deno
     u.gradient_width = g.width;
     u.gradient_height = g.height;
   }
+  const hal::ShaderInfo* shader = adaptive ? &asvgf::shaders::temporal_adaptive : &asvgf::shaders::temporal_constant;
+  const hal::PipelineHandle pipeline = pipeline_for(pipelines, *shader);
   // Not add_compute_pass: the uniforms depend on whether the histories are valid, known only when
   // the pass executes, and the counters need a barrier of their own.
   auto pass = graph.add_pass("temporal");
@@ -60,8 +51,6 @@ void TemporalPass::add(graph::RenderGraph& graph, const Resources& r, const Deno
   pass.read_history(r.depth_normal).read_history(r.color_history).read_history(r.moments);
   if (adaptive) pass.read(*r.gradient);
   pass.write(r.integrated).write(r.moments).read_write(r.counters);
-  const hal::PipelineHandle pipeline = adaptive ? adaptive_ : constant_;
-  const hal::ShaderInfo* shader = adaptive ? &asvgf::shaders::temporal_adaptive : &asvgf::shaders::temporal_constant;
   pass.execute([pipeline, shader, u, r, adaptive](graph::PassContext& ctx) mutable {
     u.history_valid = ctx.history_valid(r.depth_normal) && ctx.history_valid(r.color_history) &&
                       ctx.history_valid(r.moments);
@@ -78,6 +67,7 @@ void TemporalPass::add(graph::RenderGraph& graph, const Resources& r, const Deno
     ctx.dispatch(pipeline, entries, std::as_bytes(std::span(&u, 1)), group_count(*shader, 0, u.width),
                  group_count(*shader, 1, u.height));
   });
+  return pass;
 }
 
 SanitizeCounters::SanitizeCounters(hal::Device& device) : device_(device) {

@@ -7,35 +7,25 @@
 #include <optional>
 
 #include "graph/render_graph.hpp"
+#include "passes/compute_pass.hpp"
 #include "passes/denoise_settings.hpp"
 
 namespace asvgf::passes {
 
-class TemporalPass {
- public:
-  struct Resources {
-    graph::ResourceId illumination = 0;   // read: RGBA32F demodulated samples of this frame
-    graph::ResourceId motion = 0;         // read: RG32F, previous minus current pixel position
-    graph::ResourceId depth_normal = 0;   // read, and its history read: persistent RGBA32F
-    graph::ResourceId color_history = 0;  // its history read: persistent RGBA16F (rgb, variance)
-    graph::ResourceId moments = 0;        // history read and written: persistent RGBA32F (E[l], E[l^2], n, 0)
-    graph::ResourceId integrated = 0;     // written: RGBA16F (rgb, temporal variance); may be color_history
-    graph::ResourceId counters = 0;       // read-written SanitizeCounters buffer
-    std::optional<graph::ResourceId> gradient;  // read: 1/3 res RGBA16F (delta^, Delta^); adaptive alpha
-  };
-  explicit TemporalPass(hal::Device& device);
-  ~TemporalPass();
-  TemporalPass(const TemporalPass&) = delete;
-  TemporalPass& operator=(const TemporalPass&) = delete;
-
-  // Adds "temporal". The adaptive variant is used when settings.adaptive and a gradient is given.
-  // Histories not valid this frame (first frame, GraphRuntime::reset_histories) reset every pixel.
-  void add(graph::RenderGraph& graph, const Resources& resources, const DenoiseSettings& settings) const;
-
- private:
-  hal::Device& device_;
-  hal::PipelineHandle constant_, adaptive_;
+struct TemporalResources {
+  graph::ResourceId illumination = 0;   // read: RGBA32F demodulated samples of this frame
+  graph::ResourceId motion = 0;         // read: RG32F, previous minus current pixel position
+  graph::ResourceId depth_normal = 0;   // read, and its history read: persistent RGBA32F
+  graph::ResourceId color_history = 0;  // its history read: persistent RGBA16F (rgb, variance)
+  graph::ResourceId moments = 0;        // history read and written: persistent RGBA32F (E[l], E[l^2], n, 0)
+  graph::ResourceId integrated = 0;     // written: RGBA16F (rgb, temporal variance); may be color_history
+  graph::ResourceId counters = 0;       // read-written SanitizeCounters buffer
+  std::optional<graph::ResourceId> gradient;  // read: 1/3 res RGBA16F (delta^, Delta^); adaptive alpha
 };
+// Adds "temporal". The adaptive variant is used when settings.adaptive and a gradient is given.
+// Histories not valid this frame (first frame, GraphRuntime::reset_histories) reset every pixel.
+graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipelines, const TemporalResources& r,
+                                const DenoiseSettings& settings);
 
 // The buffer the temporal and composite passes count into: samples dropped with a NaN component,
 // with an infinite component (and no NaN), finite samples clamped to the fp16 maximum (65504)

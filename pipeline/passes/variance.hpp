@@ -3,29 +3,19 @@
 #pragma once
 
 #include "graph/render_graph.hpp"
+#include "passes/compute_pass.hpp"
 #include "passes/denoise_settings.hpp"
 
 namespace asvgf::passes {
 
-class VariancePass {
- public:
-  struct Resources {
-    graph::ResourceId integrated = 0;      // read: RGBA16F from the temporal pass
-    graph::ResourceId moments = 0;         // read: this frame's RGBA32F moments (E[l], E[l^2], n)
-    graph::ResourceId depth_normal = 0;    // read: RGBA32F
-    graph::ResourceId color_variance = 0;  // written: RGBA16F (rgb, variance)
-  };
-  explicit VariancePass(hal::Device& device);
-  ~VariancePass();
-  VariancePass(const VariancePass&) = delete;
-  VariancePass& operator=(const VariancePass&) = delete;
-
-  // Adds "variance".
-  void add(graph::RenderGraph& graph, const Resources& resources, const DenoiseSettings& settings) const;
-
- private:
-  hal::Device& device_;
-  hal::PipelineHandle pipeline_;
+struct VarianceResources {
+  graph::ResourceId integrated = 0;      // read: RGBA16F from the temporal pass
+  graph::ResourceId moments = 0;         // read: this frame's RGBA32F moments (E[l], E[l^2], n)
+  graph::ResourceId depth_normal = 0;    // read: RGBA32F
+  graph::ResourceId color_variance = 0;  // written: RGBA16F (rgb, variance)
 };
+// Adds "variance".
+graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipelines, const VarianceResources& r,
+                                const DenoiseSettings& settings);
 
 }  // namespace asvgf::passes

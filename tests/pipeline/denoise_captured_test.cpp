@@ -56,7 +56,7 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
   const FrameInputs cur = render_frame_inputs(*device, scene, true, kW, kH, 6);
 
   SUBCASE("temporal (constant alpha) reprojects along the captured motion") {
-    passes::TemporalPass pass(*device);
+    passes::PipelineCache pipelines(*device);
     passes::DenoiseSettings settings;
     passes::SanitizeCounters counters(*device);
     GraphHarness harness(*device);
@@ -83,7 +83,7 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
         harness.fill(g, mom, prev_moments);
       } else {
         harness.fill(g, dn, dn_now);
-        passes::TemporalPass::Resources res;
+        passes::TemporalResources res;
         res.illumination = harness.input(g, "illumination", illumination, F::RGBA32F);
         res.motion = harness.input(g, "motion", motion, F::RGBA32F);
         res.depth_normal = dn;
@@ -91,7 +91,7 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
         res.moments = mom;
         res.integrated = g.add_image("integrated", kW, kH, F::RGBA16F);
         res.counters = counters.import(g);
-        pass.add(g, res, settings);
+        passes::add_temporal(g, pipelines, res, settings);
         harness.readback(g, res.integrated, &integrated);
         harness.readback(g, mom, &moments);
       }
@@ -111,7 +111,7 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
   }
 
   SUBCASE("atrous (B3 spline) at steps 1, 2 and 4") {
-    passes::AtrousPass pass(*device);
+    passes::PipelineCache pipelines(*device);
     passes::DenoiseSettings settings;
     const ImageD dn = to_image(cur.depth_normal);
     const ImageD color = with_variance(cur.illumination);
@@ -120,9 +120,9 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
       GraphHarness harness(*device);
       RenderGraph g;
       const auto out = g.add_image("atrous_out", kW, kH, F::RGBA16F);
-      passes::AtrousPass::Resources res{harness.input(g, "color_in", color, F::RGBA16F),
+      passes::AtrousResources res{harness.input(g, "color_in", color, F::RGBA16F),
                                         harness.input(g, "depth_normal", dn, F::RGBA32F), out, std::nullopt};
-      pass.add(g, res, iteration, settings);
+      passes::add_atrous(g, pipelines, res, iteration, settings);
       ImageD got;
       harness.readback(g, out, &got);
       harness.run(g);

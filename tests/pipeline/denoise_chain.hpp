@@ -1,25 +1,22 @@
 // The whole denoiser (gradient, gradient_atrous, temporal, variance, atrous, composite) as a small
 // render graph on a device, fed from host images frame after frame; returns every output and
-// history. Used by the stability tests (synthetic inputs; no path tracer needed).
+// history. Used by the stability tests (synthetic inputs; no path tracer needed). The chain is
+// passes::add_denoiser, the same call the frame makes.
 #pragma once
 
 #include <optional>
 
-#include "passes/atrous.hpp"
-#include "passes/composite.hpp"
-#include "passes/gradient.hpp"
-#include "passes/gradient_atrous.hpp"
+#include "passes/denoiser.hpp"
 #include "passes/temporal.hpp"
-#include "passes/variance.hpp"
 #include "pipeline/denoise_harness.hpp"
 
 namespace denoise_test {
 
 struct FrameInput {
-  ImageD illumination;  // 4 channels (rgb)
-  ImageD depth_normal;  // 4 channels
-  ImageD motion;        // 2 channels
-  ImageD albedo;        // 4 channels
+  ImageD illumination;                  // 4 channels (rgb)
+  ImageD depth_normal;                  // 4 channels
+  ImageD motion;                        // 2 channels
+  ImageD albedo;                        // 4 channels
   std::optional<ImageD> gradient_prev;  // 2 channels at 1/3 resolution; adaptive alpha when set
 };
 
@@ -30,8 +27,7 @@ struct FrameOutput {
 class DenoiserChain {
  public:
   DenoiserChain(hal::Device& device, asvgf::passes::DenoiseSettings settings)
-      : settings_(settings), gradient_(device), gradient_atrous_(device), temporal_(device), variance_(device),
-        atrous_(device), composite_(device), harness_(device), counters_(device) {}
+      : settings_(settings), pipelines_(device), harness_(device), counters_(device) {}
 
   asvgf::passes::SanitizeCounters& counters() { return counters_; }
   asvgf::passes::DenoiseSettings& settings() { return settings_; }
@@ -40,59 +36,37 @@ class DenoiserChain {
 
   FrameOutput run(const FrameInput& in) {
     using hal::Format;
-    using asvgf::graph::Lifetime;
-    const auto w = static_cast<std::uint32_t>(in.illumination.width), h = static_cast<std::uint32_t>(in.illumination.height);
+    const auto w = static_cast<std::uint32_t>(in.illumination.width),
+               h = static_cast<std::uint32_t>(in.illumination.height);
     asvgf::graph::RenderGraph g;
-    const auto dn = g.add_image("depth_normal", w, h, Format::RGBA32F, Lifetime::Persistent);
+    const auto dn = g.add_image("depth_normal", w, h, Format::RGBA32F, asvgf::graph::Lifetime::Persistent);
     harness_.fill(g, dn, in.depth_normal);
-    const auto color_history = g.add_image("color_history", w, h, Format::RGBA16F, Lifetime::Persistent);
-    const auto moments = g.add_image("moments", w, h, Format::RGBA32F, Lifetime::Persistent);
-    asvgf::passes::TemporalPass::Resources t;
-    t.illumination = harness_.input(g, "illumination", in.illumination, Format::RGBA32F);
-    t.motion = harness_.input(g, "motion", in.motion, Format::RG32F);
-    t.depth_normal = dn;
-    t.color_history = color_history;
-    t.moments = moments;
-    t.counters = counters_.import(g);
-    if (in.gradient_prev && settings_.adaptive) {
-      const auto gp = harness_.input(g, "gradient_prev", *in.gradient_prev, Format::RG32F);
-      const auto grad = g.add_image("gradient", (w + 2) / 3, (h + 2) / 3, Format::RGBA16F);
-      gradient_.add(g, {t.illumination, gp, grad});
-      t.gradient = gradient_atrous_.add_iterations(g, grad, dn, settings_);
-    }
+    asvgf::passes::DenoiserInputs d;
+    d.illumination = harness_.input(g, "illumination", in.illumination, Format::RGBA32F);
+    d.motion = harness_.input(g, "motion", in.motion, Format::RG32F);
+    d.depth_normal = dn;
+    d.albedo = harness_.input(g, "albedo", in.albedo, Format::RGBA16F);
+    d.counters = counters_.import(g);
+    d.hdr = g.add_image("hdr", w, h, Format::RGBA32F);
+    d.display = g.add_image("display", w, h, Format::RGBA8Unorm);
+    if (in.gradient_prev) d.gradient_prev = harness_.input(g, "gradient_prev", *in.gradient_prev, Format::RG32F);
     const bool spatial = settings_.atrous_iterations > 0;
-    t.integrated = spatial ? g.add_image("integrated", w, h, Format::RGBA16F) : color_history;
-    temporal_.add(g, t, settings_);
-    asvgf::graph::ResourceId filtered = t.integrated;
-    if (spatial) {
-      const auto cv = g.add_image("color_variance", w, h, Format::RGBA16F);
-      variance_.add(g, {t.integrated, moments, dn, cv}, settings_);
-      filtered = atrous_.add_iterations(g, cv, dn, color_history, settings_);
-    }
-    const auto hdr = g.add_image("hdr", w, h, Format::RGBA32F);
-    const auto display = g.add_image("display", w, h, Format::RGBA8Unorm);
-    composite_.add(g, {filtered, harness_.input(g, "albedo", in.albedo, Format::RGBA16F), hdr, display, t.counters},
-                   settings_);
-    FrameOutput out;
-    harness_.readback(g, hdr, &out.hdr);
-    harness_.readback(g, display, &out.display);
-    harness_.readback(g, color_history, &out.color_history);
-    harness_.readback(g, moments, &out.moments);
-    harness_.readback(g, filtered, &out.filtered);
-    if (spatial) harness_.readback(g, t.integrated, &out.integrated);
+    const auto out = asvgf::passes::add_denoiser(g, pipelines_, d, settings_, asvgf::passes::Filter::Spatiotemporal);
+    FrameOutput result;
+    harness_.readback(g, d.hdr, &result.hdr);
+    harness_.readback(g, d.display, &result.display);
+    harness_.readback(g, *out.color_history, &result.color_history);
+    harness_.readback(g, *out.moments, &result.moments);
+    harness_.readback(g, out.filtered, &result.filtered);
+    if (spatial) harness_.readback(g, *out.integrated, &result.integrated);
     harness_.run(g);
-    if (!spatial) out.integrated = out.filtered;
-    return out;
+    if (!spatial) result.integrated = result.filtered;
+    return result;
   }
 
  private:
   asvgf::passes::DenoiseSettings settings_;
-  asvgf::passes::GradientPass gradient_;
-  asvgf::passes::GradientAtrousPass gradient_atrous_;
-  asvgf::passes::TemporalPass temporal_;
-  asvgf::passes::VariancePass variance_;
-  asvgf::passes::AtrousPass atrous_;
-  asvgf::passes::CompositePass composite_;
+  asvgf::passes::PipelineCache pipelines_;
   GraphHarness harness_;
   asvgf::passes::SanitizeCounters counters_;
 };

@@ -43,7 +43,7 @@ auto fp32_tolerance(double magnitude) {
 
 TEST_CASE("denoise passes: gradient pass matches the CPU reference") {
   ValidatedDevice device;
-  passes::GradientPass pass(*device);
+  passes::PipelineCache pipelines(*device);
   for (const auto& size : kSizes) {
     const int w = size[0], h = size[1], gw = (w + 2) / 3, gh = (h + 2) / 3;
     CAPTURE(w);
@@ -65,7 +65,7 @@ TEST_CASE("denoise passes: gradient pass matches the CPU reference") {
     const auto in = harness.input(g, "illumination", illumination, F::RGBA32F);
     const auto gp = harness.input(g, "gradient_prev", prev, F::RG32F);
     const auto out = g.add_image("gradient", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh), F::RGBA16F);
-    pass.add(g, {in, gp, out});
+    passes::add_gradient(g, pipelines, {in, gp, out});
     ImageD got;
     harness.readback(g, out, &got);
     harness.run(g);
@@ -78,7 +78,7 @@ TEST_CASE("denoise passes: gradient pass matches the CPU reference") {
 
 TEST_CASE("denoise passes: gradient_atrous pass matches the CPU reference at steps 1, 2 and 4") {
   ValidatedDevice device;
-  passes::GradientAtrousPass pass(*device);
+  passes::PipelineCache pipelines(*device);
   passes::DenoiseSettings settings;
   for (const auto& size : kSizes) {
     const int w = size[0], h = size[1], gw = (w + 2) / 3, gh = (h + 2) / 3;
@@ -97,7 +97,7 @@ TEST_CASE("denoise passes: gradient_atrous pass matches the CPU reference at ste
       const auto dni = harness.input(g, "depth_normal", dn, F::RGBA32F);
       const auto out = g.add_image("gradient_out", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh),
                                    F::RGBA16F);
-      pass.add(g, {gin, dni, out}, iteration, settings);
+      passes::add_gradient_atrous(g, pipelines, {gin, dni, out}, iteration, settings);
       ImageD got;
       harness.readback(g, out, &got);
       harness.run(g);
@@ -152,7 +152,7 @@ TemporalCase random_temporal_case(std::uint32_t seed, int w, int h) {
 
 TEST_CASE("denoise passes: temporal pass matches the CPU reference (constant and adaptive alpha, dropped samples counted)") {
   ValidatedDevice device;
-  passes::TemporalPass pass(*device);
+  passes::PipelineCache pipelines(*device);
   for (const bool adaptive : {false, true}) {
     for (const auto& size : kSizes) {
       const int w = size[0], h = size[1];
@@ -177,7 +177,7 @@ TEST_CASE("denoise passes: temporal pass matches the CPU reference (constant and
           harness.fill(g, mom, c.prev_moments);
         } else {
           harness.fill(g, dn, c.dn);
-          passes::TemporalPass::Resources res;
+          passes::TemporalResources res;
           res.illumination = harness.input(g, "illumination", c.illumination, F::RGBA32F);
           res.motion = harness.input(g, "motion", c.motion, F::RG32F);
           res.depth_normal = dn;
@@ -186,7 +186,7 @@ TEST_CASE("denoise passes: temporal pass matches the CPU reference (constant and
           res.integrated = g.add_image("integrated", uw, uh, F::RGBA16F);
           res.counters = counters.import(g);
           if (adaptive) res.gradient = harness.input(g, "gradient", c.gradient, F::RGBA16F);
-          pass.add(g, res, settings);
+          passes::add_temporal(g, pipelines, res, settings);
           harness.readback(g, res.integrated, &integrated);
           harness.readback(g, mom, &moments);
         }
@@ -218,7 +218,7 @@ TEST_CASE("denoise passes: temporal pass matches the CPU reference (constant and
 
 TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and spatial estimates)") {
   ValidatedDevice device;
-  passes::VariancePass pass(*device);
+  passes::PipelineCache pipelines(*device);
   passes::DenoiseSettings settings;
   for (const auto& size : kSizes) {
     const int w = size[0], h = size[1];
@@ -239,7 +239,7 @@ TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and
     RenderGraph g;
     const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
     const auto out = g.add_image("color_variance", uw, uh, F::RGBA16F);
-    pass.add(g, {harness.input(g, "integrated", integrated, F::RGBA16F), harness.input(g, "moments", moments, F::RGBA32F),
+    passes::add_variance(g, pipelines, {harness.input(g, "integrated", integrated, F::RGBA16F), harness.input(g, "moments", moments, F::RGBA32F),
                  harness.input(g, "depth_normal", dn, F::RGBA32F), out},
              settings);
     ImageD got;
@@ -254,7 +254,7 @@ TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and
 
 TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and box, steps 1, 2, 4, history tap)") {
   ValidatedDevice device;
-  passes::AtrousPass pass(*device);
+  passes::PipelineCache pipelines(*device);
   for (const auto kernel : {passes::AtrousKernel::B3Spline, passes::AtrousKernel::Box}) {
     passes::DenoiseSettings settings;
     settings.kernel = kernel;
@@ -271,11 +271,11 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
         GraphHarness harness(*device);
         RenderGraph g;
         const auto out = g.add_image("atrous_out", uw, uh, F::RGBA16F);
-        passes::AtrousPass::Resources res{harness.input(g, "color_in", color, F::RGBA16F),
+        passes::AtrousResources res{harness.input(g, "color_in", color, F::RGBA16F),
                                           harness.input(g, "depth_normal", dn, F::RGBA32F), out, std::nullopt};
         const bool tap = iteration == 1;
         if (tap) res.color_history = g.add_image("color_history", uw, uh, F::RGBA16F, Lifetime::Persistent);
-        pass.add(g, res, iteration, settings);
+        passes::add_atrous(g, pipelines, res, iteration, settings);
         ImageD got, history;
         harness.readback(g, out, &got);
         if (tap) harness.readback(g, *res.color_history, &history);
@@ -292,7 +292,7 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
 
 TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and ACES tone curves), zeroes and counts non-finite radiance") {
   ValidatedDevice device;
-  passes::CompositePass pass(*device);
+  passes::PipelineCache pipelines(*device);
   passes::SanitizeCounters counters(*device);
   for (const auto tonemap : {passes::Tonemap::Clamp, passes::Tonemap::Aces}) {
     const int w = 17, h = 13;
@@ -309,7 +309,7 @@ TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and A
     RenderGraph g;
     const auto hdr = g.add_image("hdr", w, h, F::RGBA32F);
     const auto display = g.add_image("display", w, h, F::RGBA8Unorm);
-    pass.add(g, {harness.input(g, "illumination", illumination, F::RGBA32F), harness.input(g, "albedo", albedo, F::RGBA16F),
+    passes::add_composite(g, pipelines, {harness.input(g, "illumination", illumination, F::RGBA32F), harness.input(g, "albedo", albedo, F::RGBA16F),
                  hdr, display, counters.import(g)},
              settings);
     ImageD got_hdr, got_display;
