@@ -22,9 +22,9 @@ struct Merged {
   bool read, write;
   hal::State needs;
 };
-std::vector<Merged> merge(const std::vector<Access>& accesses) {
+std::vector<Merged> merge(const std::vector<PassAccess>& accesses) {
   std::vector<Merged> out;
-  for (const Access& a : accesses) {
+  for (const PassAccess& a : accesses) {
     auto it = std::find_if(out.begin(), out.end(),
                            [&](const Merged& m) { return m.resource == a.resource && m.history == a.history; });
     if (it == out.end()) {
@@ -59,7 +59,7 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
         throw GraphError("pass " + quoted(p.name) + " uses resource id " + std::to_string(a.resource) +
                          ", which the graph does not declare");
 
-  // Writers of each resource this frame, and the dropped optional reads.
+  // Writers of each resource this frame (skipped passes' writers apart).
   const std::size_t n = passes.size();
   std::vector<bool> skipped(n);
   for (std::size_t i = 0; i < n; ++i) skipped[i] = !passes[i].skip_reason.empty();
@@ -68,16 +68,15 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
     for (const auto& a : passes[i].accesses)
       if (writes(a.use) && !a.history) (skipped[i] ? skipped_writers : writers)[a.resource].push_back(i);
 
-  std::vector<std::vector<Access>> accesses(n);
+  std::vector<std::vector<PassAccess>> accesses(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (skipped[i]) continue;
-    for (const Access& a : passes[i].accesses) {
+    for (const PassAccess& a : passes[i].accesses) {
       const ResourceDecl& r = res[a.resource];
       const bool needs_writer = reads(a.use) && !a.history && r.lifetime != Lifetime::Imported;
       bool has_writer = false;
       for (std::size_t w : writers[a.resource]) has_writer = has_writer || w != i;
       if (needs_writer && !has_writer) {
-        if (a.optional) continue;
         if (!skipped_writers[a.resource].empty()) {
           const auto& w = passes[skipped_writers[a.resource].front()];
           throw GraphError("pass " + quoted(passes[i].name) + " reads " + quoted(r.name) + ", whose writer " +

@@ -6,10 +6,10 @@
 namespace asvgf::graph {
 namespace {
 
-std::string use_name(const Access& a) {
+std::string use_name(const PassAccess& a) {
   if (a.history) return "history";
   switch (a.use) {
-    case Use::ShaderRead: return a.optional ? "read?" : "read";
+    case Use::ShaderRead: return "read";
     case Use::ShaderWrite: return "write";
     case Use::ShaderReadWrite: return "read-write";
     case Use::CopySrc: return "copy-src";

@@ -116,7 +116,7 @@ void GraphRuntime::execute(const CompiledFrame& frame, hal::CommandList& command
     if (!barriers.empty()) commands.barrier(barriers);
     commands.begin_timer(timers_, k);
     if (pass.execute) {
-      PassContext context(*this, device_, commands, frame, pass);
+      PassContext context(*this, commands, frame, pass);
       pass.execute(context);
     }
     commands.end_timer(timers_, k);
@@ -170,9 +170,9 @@ hal::BindingSetHandle GraphRuntime::binding_set(hal::PipelineHandle pipeline,
 
 void PassContext::check_declared(ResourceId id, bool history) const {
   if (!runtime_.binding_checks_) return;
-  for (const Access& a : pass_.accesses)
+  for (const PassAccess& a : pass_.accesses)
     if (a.resource == id && a.history == history) return;
-  throw GraphError("pass '" + pass_name_ + "' binds " + (history ? "the history of '" : "'") +
+  throw GraphError("pass '" + pass_.name + "' binds " + (history ? "the history of '" : "'") +
                    compiled_.graph->resource(id).name + "' but does not declare it");
 }
 

@@ -87,15 +87,11 @@ struct PassTiming {
 
 class PassContext {
  public:
-  hal::Device& device() { return device_; }
   hal::CommandList& commands() { return commands_; }
-  std::uint64_t frame() const { return frame_; }
-  const std::string& pass_name() const { return pass_name_; }
   // The HAL object behind a resource this frame, and behind last frame's version.
   hal::Resource resource(ResourceId id) const;
   hal::Resource history(ResourceId id) const;
   hal::ImageHandle image(ResourceId id) const { return hal::ImageHandle{resource(id).id}; }
-  hal::BufferHandle buffer(ResourceId id) const { return hal::BufferHandle{resource(id).id}; }
   // False when last frame's version holds nothing yet (first frame, after reset): it reads zeros.
   bool history_valid(ResourceId id) const;
   // Dispatch with bindings by shader name; binding sets are cached by the runtime.
@@ -105,17 +101,13 @@ class PassContext {
 
  private:
   friend class GraphRuntime;
-  PassContext(class GraphRuntime& runtime, hal::Device& device, hal::CommandList& commands,
-              const CompiledFrame& frame, const PassDecl& pass)
-      : runtime_(runtime), device_(device), commands_(commands), compiled_(frame), frame_(frame.frame),
-        pass_name_(pass.name), pass_(pass) {}
+  PassContext(class GraphRuntime& runtime, hal::CommandList& commands, const CompiledFrame& frame,
+              const PassDecl& pass)
+      : runtime_(runtime), commands_(commands), compiled_(frame), pass_(pass) {}
   void check_declared(ResourceId id, bool history) const;
   GraphRuntime& runtime_;
-  hal::Device& device_;
   hal::CommandList& commands_;
   const CompiledFrame& compiled_;
-  std::uint64_t frame_;
-  std::string pass_name_;
   const PassDecl& pass_;
 };
 

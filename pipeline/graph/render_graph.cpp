@@ -22,10 +22,6 @@ PassBuilder& PassBuilder::read(ResourceId r, Use use) {
   pass().accesses.push_back({r, use});
   return *this;
 }
-PassBuilder& PassBuilder::read_optional(ResourceId r) {
-  pass().accesses.push_back({r, Use::ShaderRead, false, true});
-  return *this;
-}
 PassBuilder& PassBuilder::read_history(ResourceId r) {
   if (graph_.resource(r).lifetime != Lifetime::Persistent)
     throw GraphError("pass '" + pass().name + "' reads the history of '" + graph_.resource(r).name +

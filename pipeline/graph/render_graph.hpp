@@ -43,11 +43,10 @@ struct ResourceDecl {
   hal::State imported_state = hal::State::Undefined;
 };
 
-struct Access {
+struct PassAccess {
   ResourceId resource = 0;
   Use use = Use::ShaderRead;
-  bool history = false;   // reads last frame's version of a persistent resource
-  bool optional = false;  // dropped, not an error, when the writer is skipped
+  bool history = false;  // reads last frame's version of a persistent resource
 };
 
 class PassContext;
@@ -55,7 +54,7 @@ using ExecuteFn = std::function<void(PassContext&)>;
 
 struct PassDecl {
   std::string name;
-  std::vector<Access> accesses;
+  std::vector<PassAccess> accesses;
   ExecuteFn execute;
   std::string skip_reason;  // not empty: the pass is left out of this frame, for this reason
 };
@@ -73,7 +72,6 @@ class PassBuilder {
  public:
   PassBuilder(RenderGraph& graph, std::size_t index) : graph_(graph), index_(index) {}
   PassBuilder& read(ResourceId r, Use use = Use::ShaderRead);
-  PassBuilder& read_optional(ResourceId r);
   PassBuilder& read_history(ResourceId r);
   PassBuilder& write(ResourceId r, Use use = Use::ShaderWrite);
   PassBuilder& read_write(ResourceId r);

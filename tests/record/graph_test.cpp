@@ -111,7 +111,7 @@ TEST_CASE("every method's frame compiles and runs 4 frames on the recording HAL 
 // access of one pass deleted, and says who caught it.
 // Culled: the pass wrote nothing else, so the graph left it out (dump() lists it with the reason).
 enum class Caught { Compile, Execute, RecordingHal, Culled, Nothing };
-Caught delete_one_access(const frame::FrameSettings& s, const std::string& pass, const graph::Access& access,
+Caught delete_one_access(const frame::FrameSettings& s, const std::string& pass, const graph::PassAccess& access,
                          bool binding_checks) {
   Scene scene;
   std::vector<std::string> culled;
@@ -138,7 +138,7 @@ Caught delete_one_access(const frame::FrameSettings& s, const std::string& pass,
 
 struct Mutation {
   std::string pass;
-  graph::Access access;
+  graph::PassAccess access;
   std::string resource;
 };
 std::vector<Mutation> asvgf_mutations(frame::FrameSettings s) {

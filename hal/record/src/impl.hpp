@@ -44,7 +44,7 @@ struct TimerObject {
 };
 
 // What a command does to one resource.
-struct Use {
+struct CommandUse {
   Resource resource;
   bool read = false;
   bool write = false;
@@ -58,12 +58,12 @@ struct Command {
   std::string name;  // "label/path: op object"
   std::vector<Barrier> barriers;
   DispatchDesc dispatch;  // uniforms span is not kept
-  std::vector<Use> uses;
+  std::vector<CommandUse> uses;
   std::vector<AccelHandle> tlas_instances;
 };
 
 // Tracked state of one buffer, image or acceleration structure.
-struct Track {
+struct SimulatedState {
   State state = State::Undefined;
   bool written = false;
   std::string pending_write;               // unsynchronised writer since the last barrier
@@ -80,7 +80,7 @@ struct RecordDevice::Impl {
   std::vector<BindingSetObject> binding_sets;
   std::vector<AccelObject> accels;
   std::vector<TimerObject> timers;
-  std::map<std::uint64_t, Track> tracks;
+  std::map<std::uint64_t, SimulatedState> tracks;
   std::vector<Report> reports;
   std::vector<LogEntry> log;
 
@@ -101,7 +101,7 @@ struct RecordDevice::Impl {
   void check_exists(Resource r);  // throws InvalidHandle for never-created resources
   std::string name_of(Resource r) const;
   bool destroyed(Resource r) const;
-  Track& track(Resource r) { return tracks[(std::uint64_t(r.kind) << 32) | r.id]; }
+  SimulatedState& track(Resource r) { return tracks[(std::uint64_t(r.kind) << 32) | r.id]; }
 
   void report(ReportKind kind, std::string resource, std::string first, std::string second, std::string message);
 
@@ -109,7 +109,7 @@ struct RecordDevice::Impl {
   void replay(Command& command);
   void apply_barriers(const Command& command);
   void apply_uses(const Command& command);
-  std::vector<Use> dispatch_uses(const Command& command);
+  std::vector<CommandUse> dispatch_uses(const Command& command);
   void append_log(const Command& command);
   // Host transfers: synchronous, so they also complete every earlier access.
   void host_access(Resource r, bool write, std::string_view what);

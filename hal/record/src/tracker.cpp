@@ -10,10 +10,10 @@ namespace {
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 // Folds several uses of one resource in one command (two bindings of one buffer) into one.
-std::vector<Use> merge_uses(std::vector<Use> uses) {
-  std::vector<Use> merged;
+std::vector<CommandUse> merge_uses(std::vector<CommandUse> uses) {
+  std::vector<CommandUse> merged;
   for (auto& u : uses) {
-    auto it = std::find_if(merged.begin(), merged.end(), [&](const Use& m) { return m.resource == u.resource; });
+    auto it = std::find_if(merged.begin(), merged.end(), [&](const CommandUse& m) { return m.resource == u.resource; });
     if (it == merged.end()) {
       merged.push_back(std::move(u));
       continue;
@@ -36,8 +36,8 @@ void RecordDevice::Impl::report(ReportKind kind, std::string resource, std::stri
   reports.push_back({kind, std::move(resource), std::move(first), std::move(second), std::move(message)});
 }
 
-std::vector<Use> RecordDevice::Impl::dispatch_uses(const Command& command) {
-  std::vector<Use> uses;
+std::vector<CommandUse> RecordDevice::Impl::dispatch_uses(const Command& command) {
+  std::vector<CommandUse> uses;
   auto& set = binding_set(command.dispatch.bindings);
   auto& pipe = pipeline(command.dispatch.pipeline);
   if (set.destroyed)
@@ -56,7 +56,7 @@ std::vector<Use> RecordDevice::Impl::dispatch_uses(const Command& command) {
                  quoted(pipe.name) + " (binding set " + quoted(set.name) + ")");
       continue;
     }
-    Use u;
+    CommandUse u;
     u.resource = *set.bound[i];
     u.read = b.access != Access::Write;
     u.write = b.access != Access::Read;
@@ -77,7 +77,7 @@ void RecordDevice::Impl::apply_barriers(const Command& command) {
              command.name + " names " + quoted(name) + " after it was destroyed");
       continue;
     }
-    Track& t = track(b.resource);
+    SimulatedState& t = track(b.resource);
     // A barrier from Undefined is always allowed: it discards the contents.
     if (b.before != State::Undefined && b.before != t.state)
       report(ReportKind::BarrierStateMismatch, name, t.last_change, command.name,
@@ -103,14 +103,14 @@ void RecordDevice::Impl::apply_barriers(const Command& command) {
 }
 
 void RecordDevice::Impl::apply_uses(const Command& command) {
-  for (const Use& u : command.uses) {
+  for (const CommandUse& u : command.uses) {
     const std::string name = name_of(u.resource);
     if (destroyed(u.resource)) {
       report(ReportKind::UseOfDestroyed, name, "", command.name,
              command.name + " uses " + quoted(name) + " (" + u.role + ") after it was destroyed");
       continue;
     }
-    Track& t = track(u.resource);
+    SimulatedState& t = track(u.resource);
     if (t.state != u.needs)
       report(ReportKind::WrongState, name, t.last_change, command.name,
              command.name + " needs " + quoted(name) + " (" + u.role + ") in " + std::string(to_string(u.needs)) +
@@ -133,9 +133,9 @@ void RecordDevice::Impl::apply_uses(const Command& command) {
                "write-after-read hazard on " + quoted(name) + ": " + command.name + " writes it after " + reader +
                    " read it, with no barrier between");
   }
-  for (const Use& u : command.uses) {
+  for (const CommandUse& u : command.uses) {
     if (destroyed(u.resource)) continue;
-    Track& t = track(u.resource);
+    SimulatedState& t = track(u.resource);
     if (u.write) {
       t.pending_write = command.name;
       t.pending_reads.clear();
@@ -152,7 +152,7 @@ void RecordDevice::Impl::replay(Command& command) {
   }
   command.uses = merge_uses(std::move(command.uses));
   // Usage flags of copies and builds (bindings are checked when the binding set is made).
-  for (const Use& u : command.uses) {
+  for (const CommandUse& u : command.uses) {
     if (destroyed(u.resource)) continue;
     bool ok = true;
     std::string needed;
@@ -181,7 +181,7 @@ void RecordDevice::Impl::append_log(const Command& command) {
   LogEntry e;
   e.index = log.size();
   e.name = command.name;
-  for (const Use& u : command.uses) {
+  for (const CommandUse& u : command.uses) {
     if (u.read) e.reads.push_back(name_of(u.resource));
     if (u.write) e.writes.push_back(name_of(u.resource));
   }
@@ -206,7 +206,7 @@ void RecordDevice::Impl::host_access(Resource r, bool write, std::string_view wh
     append_log(c);
     return;
   }
-  Track& t = track(r);
+  SimulatedState& t = track(r);
   if (write) {
     t.state = State::CopyDst;
     t.written = true;
