@@ -45,7 +45,8 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
   const hal::ShaderInfo* shader = adaptive ? &asvgf::shaders::temporal_adaptive : &asvgf::shaders::temporal_constant;
   const hal::PipelineHandle pipeline = pipeline_for(pipelines, *shader);
   // Not add_compute_pass: the uniforms depend on whether the histories are valid, known only when
-  // the pass executes, and the counters need a barrier of their own.
+  // the pass executes. The counters need no barrier here: SanitizeCounters::import makes them an
+  // output whose final barrier orders each frame's atomics before the next frame's.
   auto pass = graph.add_pass("temporal");
   pass.read(r.illumination).read(r.motion).read(r.depth_normal);
   pass.read_history(r.depth_normal).read_history(r.color_history).read_history(r.moments);
@@ -61,9 +62,6 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
         {"integrated", ctx.resource(r.integrated)},     {"moments", ctx.resource(r.moments)},
         {"counters", ctx.resource(r.counters)}};
     if (adaptive) entries.push_back({"gradient", ctx.resource(*r.gradient)});
-    // The counters are read-modify-written by every frame: order this frame's atomics after the
-    // last frame's even when the graph saw no state change (an imported buffer).
-    ctx.commands().barrier({ctx.resource(r.counters), hal::State::ShaderWrite, hal::State::ShaderWrite});
     ctx.dispatch(pipeline, entries, std::as_bytes(std::span(&u, 1)), group_count(*shader, 0, u.width),
                  group_count(*shader, 1, u.height));
   });
