@@ -39,11 +39,6 @@ void check_uniform_layout(const hal::ShaderInfo& shader, std::size_t size, std::
                          " members, the C++ struct " + std::to_string(fields.size()));
 }
 
-std::uint32_t group_count(const hal::ShaderInfo& shader, int axis, std::uint32_t extent) {
-  const std::uint32_t size = shader.workgroup_size[static_cast<std::size_t>(axis)];
-  return (extent + size - 1) / size;
-}
-
 hal::PipelineHandle PipelineCache::get(const hal::ShaderInfo& shader, std::size_t uniform_size,
                                        std::initializer_list<UniformField> fields) {
   if (auto it = pipelines_.find(&shader); it != pipelines_.end()) return it->second;
@@ -80,7 +75,8 @@ graph::Use use_of(const hal::ShaderBinding& b) {
 
 graph::PassBuilder add_compute_pass(graph::RenderGraph& graph, const std::string& name, const hal::ShaderInfo& shader,
                                     hal::PipelineHandle pipeline, std::vector<Binding> bindings,
-                                    std::vector<std::byte> uniforms, std::array<std::uint32_t, 3> invocations) {
+                                    std::vector<std::byte> uniforms, std::array<std::uint32_t, 3> invocations,
+                                    UniformsAtExecution at_execution) {
   if (uniforms.size() != shader.uniform_block_size)
     mismatch(name, shader,
              std::to_string(uniforms.size()) + " bytes of uniforms for the shader's block of " +
@@ -114,14 +110,20 @@ graph::PassBuilder add_compute_pass(graph::RenderGraph& graph, const std::string
   for (int axis = 0; axis < 3; ++axis)
     groups[static_cast<std::size_t>(axis)] =
         groups_for(invocations[static_cast<std::size_t>(axis)], shader.workgroup_size[static_cast<std::size_t>(axis)]);
-  builder.execute(
-      [pipeline, bindings = std::move(bindings), uniforms = std::move(uniforms), groups](graph::PassContext& ctx) {
-        std::vector<hal::BindingSetDesc::Entry> entries;
-        entries.reserve(bindings.size());
-        for (const auto& b : bindings)
-          entries.push_back({b.name, b.history ? ctx.history(b.resource) : ctx.resource(b.resource)});
-        ctx.dispatch(pipeline, entries, uniforms, groups[0], groups[1], groups[2]);
-      });
+  builder.execute([pipeline, bindings = std::move(bindings), uniforms = std::move(uniforms), groups,
+                   at_execution = std::move(at_execution)](graph::PassContext& ctx) {
+    std::vector<hal::BindingSetDesc::Entry> entries;
+    entries.reserve(bindings.size());
+    for (const auto& b : bindings)
+      entries.push_back({b.name, b.history ? ctx.history(b.resource) : ctx.resource(b.resource)});
+    if (!at_execution) {
+      ctx.dispatch(pipeline, entries, uniforms, groups[0], groups[1], groups[2]);
+      return;
+    }
+    std::vector<std::byte> values = uniforms;
+    at_execution(ctx, values);
+    ctx.dispatch(pipeline, entries, values, groups[0], groups[1], groups[2]);
+  });
   return builder;
 }
 

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <cstring>
+#include <functional>
 #include <initializer_list>
 #include <map>
 #include <string>
@@ -28,9 +29,6 @@ struct UniformField {
 // Throws hal::Error(BindingMismatch) naming the shader and member when the struct's size or a
 // member's offset differs from the shader's reflected uniform block.
 void check_uniform_layout(const hal::ShaderInfo& shader, std::size_t size, std::initializer_list<UniformField> fields);
-
-// Workgroups needed to cover `extent` invocations along one axis of `shader`.
-std::uint32_t group_count(const hal::ShaderInfo& shader, int axis, std::uint32_t extent);
 
 // Creates pipelines on first use and destroys them with itself.
 class PipelineCache {
@@ -68,13 +66,19 @@ inline std::uint32_t groups_for(std::uint32_t size, std::uint32_t group) {
   return (size + group - 1) / group;
 }
 
+// Uniform values known only when the pass executes (e.g. whether its histories hold anything):
+// called with the declared bytes just before the dispatch, it may change them.
+using UniformsAtExecution = std::function<void(graph::PassContext& context, std::vector<std::byte>& uniforms)>;
+
 // Declares every binding in the graph, with the use its reflection gives (read, write, read-write,
 // acceleration-structure read), and dispatches `pipeline` (made from `shader`) with them and
 // `uniforms` over `invocations` threads per axis (the groups cover them). Throws
 // hal::Error(BindingMismatch) naming the pass, the shader and the binding when a name is not one of
-// the shader's bindings, a shader binding is left unbound, or a history binding is written.
+// the shader's bindings, a shader binding is left unbound, a binding is given twice, a history
+// binding is written, or `uniforms` is not the size of the shader's block.
 graph::PassBuilder add_compute_pass(graph::RenderGraph& graph, const std::string& name, const hal::ShaderInfo& shader,
                                     hal::PipelineHandle pipeline, std::vector<Binding> bindings,
-                                    std::vector<std::byte> uniforms, std::array<std::uint32_t, 3> invocations);
+                                    std::vector<std::byte> uniforms, std::array<std::uint32_t, 3> invocations,
+                                    UniformsAtExecution at_execution = {});
 
 }  // namespace asvgf::passes

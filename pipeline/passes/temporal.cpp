@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstring>
 #include <span>
 
 #include "graph/graph_runtime.hpp"
@@ -44,28 +45,26 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
   }
   const hal::ShaderInfo* shader = adaptive ? &asvgf::shaders::temporal_adaptive : &asvgf::shaders::temporal_constant;
   const hal::PipelineHandle pipeline = pipeline_for(pipelines, *shader);
-  // Not add_compute_pass: the uniforms depend on whether the histories are valid, known only when
-  // the pass executes. The counters need no barrier here: SanitizeCounters::import makes them an
-  // output whose final barrier orders each frame's atomics before the next frame's.
-  auto pass = graph.add_pass("temporal");
-  pass.read(r.illumination).read(r.motion).read(r.depth_normal);
-  pass.read_history(r.depth_normal).read_history(r.color_history).read_history(r.moments);
-  if (adaptive) pass.read(*r.gradient);
-  pass.write(r.integrated).write(r.moments).read_write(r.counters);
-  pass.execute([pipeline, shader, u, r, adaptive](graph::PassContext& ctx) mutable {
-    u.history_valid = ctx.history_valid(r.depth_normal) && ctx.history_valid(r.color_history) &&
-                      ctx.history_valid(r.moments);
-    std::vector<hal::BindingSetDesc::Entry> entries{
-        {"illumination", ctx.resource(r.illumination)}, {"motion", ctx.resource(r.motion)},
-        {"depth_normal", ctx.resource(r.depth_normal)}, {"prev_depth_normal", ctx.history(r.depth_normal)},
-        {"prev_color", ctx.history(r.color_history)},   {"prev_moments", ctx.history(r.moments)},
-        {"integrated", ctx.resource(r.integrated)},     {"moments", ctx.resource(r.moments)},
-        {"counters", ctx.resource(r.counters)}};
-    if (adaptive) entries.push_back({"gradient", ctx.resource(*r.gradient)});
-    ctx.dispatch(pipeline, entries, std::as_bytes(std::span(&u, 1)), group_count(*shader, 0, u.width),
-                 group_count(*shader, 1, u.height));
-  });
-  return pass;
+  std::vector<Binding> bindings{{"illumination", r.illumination},
+                                {"motion", r.motion},
+                                {"depth_normal", r.depth_normal},
+                                {"prev_depth_normal", r.depth_normal, true},
+                                {"prev_color", r.color_history, true},
+                                {"prev_moments", r.moments, true},
+                                {"integrated", r.integrated},
+                                {"moments", r.moments},
+                                {"counters", r.counters}};
+  if (adaptive) bindings.push_back({"gradient", *r.gradient});
+  // Whether the histories hold anything is known only when the pass executes. The counters need no
+  // barrier of their own: SanitizeCounters::import makes them an output whose final barrier orders
+  // each frame's atomics before the next frame's.
+  return add_compute_pass(graph, "temporal", *shader, pipeline, std::move(bindings), to_bytes(u),
+                          {u.width, u.height, 1}, [r](graph::PassContext& ctx, std::vector<std::byte>& uniforms) {
+                            const std::uint32_t valid = ctx.history_valid(r.depth_normal) &&
+                                                        ctx.history_valid(r.color_history) &&
+                                                        ctx.history_valid(r.moments);
+                            std::memcpy(uniforms.data() + offsetof(Uniforms, history_valid), &valid, sizeof valid);
+                          });
 }
 
 SanitizeCounters::SanitizeCounters(hal::Device& device) : device_(device) {
@@ -76,7 +75,9 @@ SanitizeCounters::SanitizeCounters(hal::Device& device) : device_(device) {
   state_ = hal::State::CopyDst;
 }
 
-SanitizeCounters::~SanitizeCounters() { device_.destroy(buffer_); }
+SanitizeCounters::~SanitizeCounters() {
+  device_.destroy(buffer_);
+}
 
 graph::ResourceId SanitizeCounters::import(graph::RenderGraph& graph) {
   const graph::ResourceId id = graph.import("sanitize_counters", buffer_, state_);
