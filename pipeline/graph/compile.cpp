@@ -1,4 +1,5 @@
-// Compiling a render graph: culling, ordering, placement (aliasing, ping-pong) and barriers.
+// Compiling a render graph in five phases: validate, cull, order, place (lifetimes, transient
+// aliasing, persistent ping-pong) and barriers; each phase is a function below.
 #include <algorithm>
 #include <map>
 #include <set>
@@ -8,11 +9,12 @@
 namespace asvgf::graph {
 namespace {
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
+std::string quoted(const std::string& s) {
+  return "'" + s + "'";
+}
 
 std::uint64_t bytes(const ResourceDecl& d) {
-  return d.kind == hal::ResourceKind::Buffer ? d.size
-                                             : std::uint64_t(d.width) * d.height * hal::format_size(d.format);
+  return d.kind == hal::ResourceKind::Buffer ? d.size : std::uint64_t(d.width) * d.height * hal::format_size(d.format);
 }
 
 // Accesses of one pass, one per (resource, history) with read/write folded together.
@@ -37,6 +39,172 @@ std::vector<Merged> merge(const std::vector<PassAccess>& accesses) {
   return out;
 }
 
+// What the phases of compile() hand on to each other. Pass indices are positions in
+// RenderGraph::passes(); resource ids are the graph's.
+struct Analysis {
+  const RenderGraph& graph;
+  const std::vector<PassDecl>& passes;
+  const std::vector<ResourceDecl>& res;
+  std::size_t n = 0;
+  std::vector<bool> skipped;                      // left out by the caller, with a reason
+  std::vector<std::vector<std::size_t>> writers;  // per resource: passes that write it (not skipped)
+  std::vector<std::vector<PassAccess>> accesses;  // per pass: what it uses (empty when skipped)
+  std::vector<bool> live;                         // contributes to an output
+  std::vector<std::set<std::size_t>> after;       // after[w]: passes that must follow w
+  std::vector<std::size_t> order;                 // execution order of the live passes
+};
+
+// Phase 1, validate: every access names a declared resource, every read has a writer (or is a
+// history or an import); collects writers and the accesses of the passes that are not skipped.
+void validate(Analysis& a) {
+  const auto& passes = a.passes;
+  const auto& res = a.res;
+  for (const auto& p : passes)
+    for (const auto& acc : p.accesses)
+      if (acc.resource >= res.size())
+        throw GraphError("pass " + quoted(p.name) + " uses resource id " + std::to_string(acc.resource) +
+                         ", which the graph does not declare");
+  const std::size_t n = a.n;
+  a.skipped.assign(n, false);
+  for (std::size_t i = 0; i < n; ++i) a.skipped[i] = !passes[i].skip_reason.empty();
+  a.writers.assign(res.size(), {});
+  std::vector<std::vector<std::size_t>> skipped_writers(res.size());
+  for (std::size_t i = 0; i < n; ++i)
+    for (const auto& acc : passes[i].accesses)
+      if (writes(acc.use) && !acc.history) (a.skipped[i] ? skipped_writers : a.writers)[acc.resource].push_back(i);
+  a.accesses.assign(n, {});
+  for (std::size_t i = 0; i < n; ++i) {
+    if (a.skipped[i]) continue;
+    for (const PassAccess& acc : passes[i].accesses) {
+      const ResourceDecl& r = res[acc.resource];
+      const bool needs_writer = reads(acc.use) && !acc.history && r.lifetime != Lifetime::Imported;
+      bool has_writer = false;
+      for (std::size_t w : a.writers[acc.resource]) has_writer = has_writer || w != i;
+      if (needs_writer && !has_writer) {
+        if (!skipped_writers[acc.resource].empty()) {
+          const auto& w = passes[skipped_writers[acc.resource].front()];
+          throw GraphError("pass " + quoted(passes[i].name) + " reads " + quoted(r.name) + ", whose writer " +
+                           quoted(w.name) + " is left out (" + w.skip_reason + ")");
+        }
+        throw GraphError("pass " + quoted(passes[i].name) + " reads " + quoted(r.name) +
+                         ", which no pass writes and which is neither a history nor imported");
+      }
+      a.accesses[i].push_back(acc);
+    }
+  }
+}
+
+// Phase 2, cull: keep what contributes to an output, directly or through a history read next frame.
+std::vector<CulledPass> cull(Analysis& a) {
+  const std::size_t n = a.n;
+  const auto& res = a.res;
+  a.live.assign(n, false);
+  std::vector<bool> needed(res.size()), history_needed(res.size());
+  for (ResourceId o : a.graph.outputs()) needed[o] = true;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t i = n; i-- > 0;) {
+      if (a.skipped[i] || a.live[i]) continue;
+      bool contributes = false;
+      for (const auto& acc : a.accesses[i])
+        if (writes(acc.use) && !acc.history && (needed[acc.resource] || history_needed[acc.resource]))
+          contributes = true;
+      if (!contributes) continue;
+      a.live[i] = changed = true;
+      for (const auto& acc : a.accesses[i]) {
+        if (acc.history)
+          history_needed[acc.resource] = true;
+        else if (reads(acc.use))
+          needed[acc.resource] = true;
+      }
+    }
+  }
+  std::vector<CulledPass> culled;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (a.skipped[i]) {
+      culled.push_back({a.passes[i].name, a.passes[i].skip_reason});
+    } else if (!a.live[i]) {
+      std::string written;
+      for (const auto& acc : a.accesses[i])
+        if (writes(acc.use)) written += (written.empty() ? "" : ", ") + quoted(res[acc.resource].name);
+      culled.push_back({a.passes[i].name, "nothing that contributes to the frame's outputs reads what it writes (" +
+                                              (written.empty() ? std::string("nothing") : written) + ")"});
+    }
+  }
+  return culled;
+}
+
+// Phase 3, order: a reader comes after every other writer of what it reads (Kahn, ties by
+// declaration); passes that read-modify-write one resource (counters both accumulate into) would
+// each come after the other, so among themselves they keep their declaration order. Two writers of
+// one resource must then be ordered by a dependency, not by accident of declaration.
+void order(Analysis& a) {
+  const std::size_t n = a.n;
+  const auto& passes = a.passes;
+  const auto& res = a.res;
+  a.after.assign(n, {});
+  std::vector<int> indegree(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    if (!a.live[p]) continue;
+    for (const auto& acc : a.accesses[p]) {
+      if (!reads(acc.use) || acc.history) continue;
+      for (std::size_t w : a.writers[acc.resource])
+        if (w != p && a.live[w] && !(writes(acc.use) && w > p) && a.after[w].insert(p).second) ++indegree[p];
+    }
+  }
+  std::vector<bool> placed(n);
+  for (;;) {
+    std::size_t next = n;
+    for (std::size_t i = 0; i < n && next == n; ++i)
+      if (a.live[i] && !placed[i] && indegree[i] == 0) next = i;
+    if (next == n) break;
+    placed[next] = true;
+    a.order.push_back(next);
+    for (std::size_t s : a.after[next]) --indegree[s];
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!a.live[i] || placed[i]) continue;
+    std::string through;
+    for (const auto& acc : a.accesses[i])
+      if (reads(acc.use) && !acc.history)
+        for (std::size_t w : a.writers[acc.resource])
+          if (w != i && a.live[w] && !placed[w] && through.empty())
+            through = quoted(passes[w].name) + " through " + quoted(res[acc.resource].name);
+    throw GraphError("cycle: pass " + quoted(passes[i].name) + " and " + through + " depend on each other");
+  }
+  auto reaches = [&](std::size_t from, std::size_t to) {
+    std::vector<bool> seen(n);
+    std::vector<std::size_t> stack{from};
+    while (!stack.empty()) {
+      std::size_t v = stack.back();
+      stack.pop_back();
+      if (v == to) return true;
+      for (std::size_t s : a.after[v])
+        if (!seen[s]) seen[s] = true, stack.push_back(s);
+    }
+    return false;
+  };
+  for (std::size_t r = 0; r < res.size(); ++r) {
+    std::vector<std::size_t> w;
+    for (std::size_t p : a.writers[r])
+      if (a.live[p]) w.push_back(p);
+    for (std::size_t x = 0; x < w.size(); ++x)
+      for (std::size_t y = x + 1; y < w.size(); ++y)
+        if (!reaches(w[x], w[y]) && !reaches(w[y], w[x]))
+          throw GraphError("passes " + quoted(passes[w[x]].name) + " and " + quoted(passes[w[y]].name) +
+                           " both write " + quoted(res[r].name) + " with no order between them");
+  }
+}
+
+// The physical resource a barrier tracks: a transient pool slot, one version of a persistent
+// resource, or an import.
+struct TrackKey {
+  Placement::Where where = Placement::Where::Unused;
+  std::uint32_t index = 0;    // slot (transient) or resource id (persistent, imported)
+  std::uint32_t version = 0;  // persistent only
+  friend auto operator<=>(const TrackKey&, const TrackKey&) = default;
+};
+
 }  // namespace
 
 bool GraphRuntime::same_shape(const Slot& slot, const ResourceDecl& d) const {
@@ -53,136 +221,22 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
   out.placement.resize(res.size());
   out.lifetime.assign(res.size(), {-1, -1});
 
-  for (const auto& p : passes)
-    for (const auto& a : p.accesses)
-      if (a.resource >= res.size())
-        throw GraphError("pass " + quoted(p.name) + " uses resource id " + std::to_string(a.resource) +
-                         ", which the graph does not declare");
+  Analysis a{graph, passes, res, passes.size(), {}, {}, {}, {}, {}, {}};
+  validate(a);
+  out.culled = cull(a);
+  order(a);
+  place(out, a.order, a.accesses);
+  derive_barriers(out, a.order, a.accesses);
+  return out;
+}
 
-  // Writers of each resource this frame (skipped passes' writers apart).
-  const std::size_t n = passes.size();
-  std::vector<bool> skipped(n);
-  for (std::size_t i = 0; i < n; ++i) skipped[i] = !passes[i].skip_reason.empty();
-  std::vector<std::vector<std::size_t>> writers(res.size()), skipped_writers(res.size());
-  for (std::size_t i = 0; i < n; ++i)
-    for (const auto& a : passes[i].accesses)
-      if (writes(a.use) && !a.history) (skipped[i] ? skipped_writers : writers)[a.resource].push_back(i);
-
-  std::vector<std::vector<PassAccess>> accesses(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (skipped[i]) continue;
-    for (const PassAccess& a : passes[i].accesses) {
-      const ResourceDecl& r = res[a.resource];
-      const bool needs_writer = reads(a.use) && !a.history && r.lifetime != Lifetime::Imported;
-      bool has_writer = false;
-      for (std::size_t w : writers[a.resource]) has_writer = has_writer || w != i;
-      if (needs_writer && !has_writer) {
-        if (!skipped_writers[a.resource].empty()) {
-          const auto& w = passes[skipped_writers[a.resource].front()];
-          throw GraphError("pass " + quoted(passes[i].name) + " reads " + quoted(r.name) + ", whose writer " +
-                           quoted(w.name) + " is left out (" + w.skip_reason + ")");
-        }
-        throw GraphError("pass " + quoted(passes[i].name) + " reads " + quoted(r.name) +
-                         ", which no pass writes and which is neither a history nor imported");
-      }
-      accesses[i].push_back(a);
-    }
-  }
-
-  // Culling: keep what contributes to an output, directly or through a history read next frame.
-  std::vector<bool> live(n), needed(res.size()), history_needed(res.size());
-  for (ResourceId o : graph.outputs()) needed[o] = true;
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (std::size_t i = n; i-- > 0;) {
-      if (skipped[i] || live[i]) continue;
-      bool contributes = false;
-      for (const auto& a : accesses[i])
-        if (writes(a.use) && !a.history && (needed[a.resource] || history_needed[a.resource])) contributes = true;
-      if (!contributes) continue;
-      live[i] = changed = true;
-      for (const auto& a : accesses[i]) {
-        if (a.history) history_needed[a.resource] = true;
-        else if (reads(a.use)) needed[a.resource] = true;
-      }
-    }
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (skipped[i]) {
-      out.culled.push_back({passes[i].name, passes[i].skip_reason});
-    } else if (!live[i]) {
-      std::string written;
-      for (const auto& a : accesses[i])
-        if (writes(a.use)) written += (written.empty() ? "" : ", ") + quoted(res[a.resource].name);
-      out.culled.push_back({passes[i].name, "nothing that contributes to the frame's outputs reads what it writes (" +
-                                                (written.empty() ? std::string("nothing") : written) + ")"});
-    }
-  }
-
-  // Ordering: a reader comes after every other writer of what it reads (Kahn, ties by declaration).
-  // Passes that read-modify-write one resource (counters both accumulate into) would each come after
-  // the other: among themselves they keep their declaration order.
-  std::vector<std::set<std::size_t>> after(n);  // after[w] = passes that must follow w
-  std::vector<int> indegree(n);
-  for (std::size_t p = 0; p < n; ++p) {
-    if (!live[p]) continue;
-    for (const auto& a : accesses[p]) {
-      if (!reads(a.use) || a.history) continue;
-      for (std::size_t w : writers[a.resource])
-        if (w != p && live[w] && !(writes(a.use) && w > p) && after[w].insert(p).second) ++indegree[p];
-    }
-  }
-  std::vector<std::size_t> order;
-  std::vector<bool> placed(n);
-  for (;;) {
-    std::size_t next = n;
-    for (std::size_t i = 0; i < n && next == n; ++i)
-      if (live[i] && !placed[i] && indegree[i] == 0) next = i;
-    if (next == n) break;
-    placed[next] = true;
-    order.push_back(next);
-    for (std::size_t s : after[next]) --indegree[s];
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!live[i] || placed[i]) continue;
-    std::string through;
-    for (const auto& a : accesses[i])
-      if (reads(a.use) && !a.history)
-        for (std::size_t w : writers[a.resource])
-          if (w != i && live[w] && !placed[w] && through.empty())
-            through = quoted(passes[w].name) + " through " + quoted(res[a.resource].name);
-    throw GraphError("cycle: pass " + quoted(passes[i].name) + " and " + through + " depend on each other");
-  }
-  // Two writers of one resource must be ordered by a dependency, not by accident of declaration.
-  std::vector<int> position(n, -1);
-  for (std::size_t k = 0; k < order.size(); ++k) position[order[k]] = static_cast<int>(k);
-  auto reaches = [&](std::size_t from, std::size_t to) {
-    std::vector<bool> seen(n);
-    std::vector<std::size_t> stack{from};
-    while (!stack.empty()) {
-      std::size_t v = stack.back();
-      stack.pop_back();
-      if (v == to) return true;
-      for (std::size_t s : after[v])
-        if (!seen[s]) seen[s] = true, stack.push_back(s);
-    }
-    return false;
-  };
-  for (std::size_t r = 0; r < res.size(); ++r) {
-    std::vector<std::size_t> w;
-    for (std::size_t p : writers[r])
-      if (live[p]) w.push_back(p);
-    for (std::size_t a = 0; a < w.size(); ++a)
-      for (std::size_t b = a + 1; b < w.size(); ++b)
-        if (!reaches(w[a], w[b]) && !reaches(w[b], w[a]))
-          throw GraphError("passes " + quoted(passes[w[a]].name) + " and " + quoted(passes[w[b]].name) +
-                           " both write " + quoted(res[r].name) + " with no order between them");
-  }
-
-  // Placement: lifetimes, transient aliasing (greedy over the pool), persistent ping-pong.
+// Phase 4, place: lifetimes, transient aliasing (greedy over the pool), persistent ping-pong.
+void GraphRuntime::place(CompiledFrame& out, const std::vector<std::size_t>& order,
+                         const std::vector<std::vector<PassAccess>>& accesses) {
+  const auto& res = out.graph->resources();
   for (std::size_t k = 0; k < order.size(); ++k)
-    for (const auto& a : accesses[order[k]]) {
-      auto& life = out.lifetime[a.resource];
+    for (const auto& acc : accesses[order[k]]) {
+      auto& life = out.lifetime[acc.resource];
       if (life.first < 0) life.first = static_cast<int>(k);
       life.second = static_cast<int>(k);
     }
@@ -190,12 +244,16 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
   for (ResourceId r = 0; r < res.size(); ++r) {
     if (out.lifetime[r].first < 0) continue;
     switch (res[r].lifetime) {
-      case Lifetime::Transient: transients.push_back(r); break;
+      case Lifetime::Transient:
+        transients.push_back(r);
+        break;
       case Lifetime::Persistent:
         out.placement[r] = {Placement::Where::Persistent, static_cast<std::uint32_t>(frame_ % 2)};
         out.memory.persistent += 2 * bytes(res[r]);
         break;
-      case Lifetime::Imported: out.placement[r] = {Placement::Where::Imported, 0}; break;
+      case Lifetime::Imported:
+        out.placement[r] = {Placement::Where::Imported, 0};
+        break;
     }
   }
   std::stable_sort(transients.begin(), transients.end(),
@@ -216,25 +274,34 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
     busy_until[slot] = out.lifetime[r].second;
     out.placement[r] = {Placement::Where::Transient, static_cast<std::uint32_t>(slot)};
   }
+}
 
-  // Barriers: per physical resource, transition when the state differs, synchronise on hazards.
+// Phase 5, barriers: per physical resource, transition when the state differs, synchronise on
+// hazards; then outputs into their final states, and what this frame leaves for the next.
+void GraphRuntime::derive_barriers(CompiledFrame& out, const std::vector<std::size_t>& order,
+                                   const std::vector<std::vector<PassAccess>>& accesses) {
+  const auto& graph = *out.graph;
+  const auto& res = graph.resources();
   struct Track {
     hal::State state = hal::State::Undefined;
     bool written = false, pending_write = false, pending_read = false, fresh = false;
     ResourceId owner = 0;  // transients: the resource that last used the slot
     bool owned = false;
   };
-  std::map<std::string, Track> tracks;
-  auto key = [&](ResourceId r, bool history) -> std::string {
+  std::map<TrackKey, Track> tracks;
+  auto key = [&](ResourceId r, bool history) -> TrackKey {
     const Placement& p = out.placement[r];
     switch (p.where) {
-      case Placement::Where::Transient: return "t" + std::to_string(p.slot);  // shared by its owners
-      case Placement::Where::Persistent: return "p" + res[r].name + "#" + std::to_string(history ? 1 - p.slot : p.slot);
-      default: return "i" + std::to_string(r);
+      case Placement::Where::Transient:
+        return {p.where, p.slot, 0};  // shared by its owners
+      case Placement::Where::Persistent:
+        return {p.where, r, history ? 1 - p.slot : p.slot};
+      default:
+        return {p.where, r, 0};
     }
   };
   auto track_of = [&](ResourceId r, bool history) -> Track& {
-    const std::string k = key(r, history);
+    const TrackKey k = key(r, history);
     auto it = tracks.find(k);
     if (it != tracks.end()) return it->second;
     Track t;
@@ -251,9 +318,9 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
     } else if (p.where == Placement::Where::Persistent) {
       auto pit = persistent_.find(res[r].name);
       const std::uint32_t v = history ? 1 - p.slot : p.slot;
-      if (pit != persistent_.end() && same_shape(Slot{res[r].kind, res[r].width, res[r].height, res[r].format,
-                                                      res[r].size, {}},
-                                                 pit->second.decl)) {
+      if (pit != persistent_.end() &&
+          same_shape(Slot{res[r].kind, res[r].width, res[r].height, res[r].format, res[r].size, {}},
+                     pit->second.decl)) {
         t.state = pit->second.state[v];
         t.written = pit->second.written[v];
         t.pending_write = pit->second.pending_write[v];
@@ -285,8 +352,10 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
         t.state = m.needs;
         t.pending_write = t.pending_read = t.fresh = false;
       }
-      if (m.write) t.pending_write = true, t.pending_read = false, t.written = true;
-      else t.pending_read = true;
+      if (m.write)
+        t.pending_write = true, t.pending_read = false, t.written = true;
+      else
+        t.pending_read = true;
     }
     out.passes.push_back(std::move(cp));
   }
@@ -302,9 +371,8 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
     }
   }
   for (const auto& [k, t] : tracks)
-    if (k[0] == 't')
-      out.slot_end.push_back({static_cast<std::uint32_t>(std::stoul(k.substr(1))), t.state,
-                              t.pending_write || t.pending_read});
+    if (k.where == Placement::Where::Transient)
+      out.slot_end.push_back({k.index, t.state, t.pending_write || t.pending_read});
   for (ResourceId r = 0; r < res.size(); ++r) {
     if (out.placement[r].where != Placement::Where::Persistent) continue;
     for (bool history : {false, true}) {
@@ -315,7 +383,6 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
       out.persistent_end.push_back({res[r].name, v, t.state, t.written, t.pending_write, t.pending_read});
     }
   }
-  return out;
 }
 
 }  // namespace asvgf::graph

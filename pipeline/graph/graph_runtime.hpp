@@ -155,6 +155,11 @@ class GraphRuntime {
     bool pending_read[2] = {false, false};
   };
   bool same_shape(const Slot& slot, const ResourceDecl& decl) const;
+  // The last two phases of compile() (compile.cpp): placement of every used resource, then barriers.
+  void place(CompiledFrame& out, const std::vector<std::size_t>& order,
+             const std::vector<std::vector<PassAccess>>& accesses);
+  void derive_barriers(CompiledFrame& out, const std::vector<std::size_t>& order,
+                       const std::vector<std::vector<PassAccess>>& accesses);
   hal::Resource physical(const CompiledFrame& frame, ResourceId id, bool history);
   void ensure_resources(const CompiledFrame& frame);
   hal::BindingSetHandle binding_set(hal::PipelineHandle pipeline, const std::vector<hal::BindingSetDesc::Entry>& e);
