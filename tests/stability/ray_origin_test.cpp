@@ -4,7 +4,9 @@
 // variants (ray queries and the software BVH) are checked.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "pipeline/frame_inputs.hpp"
@@ -84,6 +86,21 @@ const scene::CameraState kEdgeViews[] = {
     {{0.666f, 0.425f, -0.545f}, {1.0f, -1.0f, 0.212f}, {0.0f, 0.0f, 1.0f}, 60.0f},
 };
 
+// Renders `s` from every edge view (33x33, frame 0) in both tracing variants and hands each
+// frame's inputs to `check`.
+void for_each_edge_view(hal::Device& device, scene::Scene s, std::uint32_t spp, std::uint32_t max_bounces,
+                        const std::function<void(const FrameInputs&)>& check) {
+  const std::uint32_t size = 33;
+  for (bool ray_query : {true, false}) {
+    for (std::size_t v = 0; v < std::size(kEdgeViews); ++v) {
+      CAPTURE(ray_query);
+      CAPTURE(v);
+      s.camera = {{0.0f, kEdgeViews[v]}};
+      check(render_frame_inputs(device, s, ray_query, size, size, 0, spp, max_bounces));
+    }
+  }
+}
+
 }  // namespace
 
 TEST_CASE("the room scaled by 1e-4, 1e-3, 1e-2, 1, 1e2 and 1e4 renders the same image within Monte Carlo noise") {
@@ -147,26 +164,17 @@ TEST_CASE(
   // edges and corners exactly, where a ray leaving the hit point used to start on the neighbouring
   // face's plane and pass through it.
   ValidatedDevice device;
-  scene::Scene s = closed_box({2.2f, 0.3f, 0.4f}, 0.5f);
-  const std::uint32_t size = 33;
-  for (bool ray_query : {true, false}) {
-    for (std::size_t v = 0; v < std::size(kEdgeViews); ++v) {
-      CAPTURE(ray_query);
-      CAPTURE(v);
-      s.camera = {{0.0f, kEdgeViews[v]}};
-      const FrameInputs in = render_frame_inputs(*device, s, ray_query, size, size, 0, 4);
-      int lit = 0;
-      float brightest = 0;
-      for (std::size_t p = 0; p < std::size_t(size) * size; ++p)
-        for (int c = 0; c < 3; ++c) {
-          brightest = std::max(brightest, in.illumination[4 * p + c]);
-          lit += c == 0 &&
-                 (in.illumination[4 * p] != 0 || in.illumination[4 * p + 1] != 0 || in.illumination[4 * p + 2] != 0);
-        }
-      MESSAGE(lit << " lit pixels, brightest " << brightest);
-      CHECK(lit == 0);
+  for_each_edge_view(*device, closed_box({2.2f, 0.3f, 0.4f}, 0.5f), 4, 4, [](const FrameInputs& in) {
+    int lit = 0;
+    float brightest = 0;
+    for (std::size_t p = 0; p < std::size_t(in.width) * in.height; ++p) {
+      const float* rgb = &in.illumination[4 * p];
+      brightest = std::max({brightest, rgb[0], rgb[1], rgb[2]});
+      lit += rgb[0] != 0 || rgb[1] != 0 || rgb[2] != 0;
     }
-  }
+    MESSAGE(lit << " lit pixels, brightest " << brightest);
+    CHECK(lit == 0);
+  });
 }
 
 TEST_CASE("a light inside a closed box lights every pixel of its walls, edges and corners included, at 1 spp") {
@@ -174,18 +182,10 @@ TEST_CASE("a light inside a closed box lights every pixel of its walls, edges an
   // always samples it: a black pixel is a shadow ray stopped by the wall it starts from or by its
   // neighbour at an edge.
   ValidatedDevice device;
-  scene::Scene s = closed_box({0.3f, -0.2f, 0.1f}, 0.15f);
-  const std::uint32_t size = 33;
-  for (bool ray_query : {true, false}) {
-    for (std::size_t v = 0; v < std::size(kEdgeViews); ++v) {
-      CAPTURE(ray_query);
-      CAPTURE(v);
-      s.camera = {{0.0f, kEdgeViews[v]}};
-      const FrameInputs in = render_frame_inputs(*device, s, ray_query, size, size, 0, 1, 1);
-      int black = 0;
-      for (std::size_t p = 0; p < std::size_t(size) * size; ++p)
-        black += !(in.illumination[4 * p] > 0 && in.illumination[4 * p + 1] > 0 && in.illumination[4 * p + 2] > 0);
-      CHECK(black == 0);
-    }
-  }
+  for_each_edge_view(*device, closed_box({0.3f, -0.2f, 0.1f}, 0.15f), 1, 1, [](const FrameInputs& in) {
+    int black = 0;
+    for (std::size_t p = 0; p < std::size_t(in.width) * in.height; ++p)
+      black += !(in.illumination[4 * p] > 0 && in.illumination[4 * p + 1] > 0 && in.illumination[4 * p + 2] > 0);
+    CHECK(black == 0);
+  });
 }
