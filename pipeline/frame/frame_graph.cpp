@@ -54,7 +54,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
 
   // A-SVGF's temporal gradient: forward-projected samples, then delta and Delta at 1/3 resolution.
   const std::string not_moved = "nothing in the scene, camera or lights moved since the last frame";
-  const bool adaptive = s.method == Method::Asvgf;
+  const bool adaptive = denoise.adaptive;
   const bool gradients = adaptive && s.scene_moved;
   std::optional<ResourceId> gradient_seeds;
   ResourceId gradient_prev = 0;
@@ -90,7 +90,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
                                          : g.add_image("debug_view", w, h, F::RGBA8Unorm);
   passes::add_debug_view(g, pipelines_,
                          {depth_normal, motion, albedo, illumination, debug, denoised.gradient, denoised.moments,
-                          denoised.variance, denoise.alpha, denoise.history_cap},
+                          denoised.variance, denoise},
                          s.debug_view.value_or(passes::DebugView::Normals), w, h);
   if (s.debug_view) g.output(debug, hal::State::CopySrc);
   return g;

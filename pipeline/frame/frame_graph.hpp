@@ -29,16 +29,21 @@ std::string_view to_string(Method method);
 std::optional<Method> method_from_string(std::string_view name);
 inline constexpr Method kAllMethods[] = {Method::Raw, Method::Ema, Method::Svgf, Method::Asvgf, Method::Reference};
 
-struct FrameSettings {
+// What a run chooses once: the same for every frame (render::RenderSettings extends it).
+struct FrameConfig {
   Method method = Method::Asvgf;
   std::uint32_t width = 128, height = 128;
-  passes::DenoiseSettings denoise;  // adaptive alpha is on for asvgf, off for the other methods
-  bool scene_moved = true;          // false: nothing moved since last frame, the gradient passes are left out
-  std::optional<passes::DebugView> debug_view;  // also produce this intermediate-buffer view (demo)
-  std::uint32_t frame = 0;          // frame index: decorrelates random numbers
-  std::uint32_t seed = 0;           // --seed
-  std::uint32_t spp = 1;            // samples per pixel of the path tracer this frame
+  std::uint32_t spp = 1;  // samples per pixel (reference: of each frame; FrameSettings: of this batch)
   std::uint32_t max_bounces = 4;
+  std::uint32_t seed = 0;                       // --seed
+  passes::DenoiseSettings denoise;              // `adaptive` is set from the method (on for asvgf only)
+  std::optional<passes::DebugView> debug_view;  // also produce this intermediate-buffer view (demo)
+};
+
+// One frame's graph: the run's choices and what changes from frame to frame.
+struct FrameSettings : FrameConfig {
+  bool scene_moved = true;          // false: nothing moved since last frame, the gradient passes are left out
+  std::uint32_t frame = 0;          // frame index: decorrelates random numbers
   bool accumulation_valid = false;  // reference: last frame's accumulation continues
 };
 

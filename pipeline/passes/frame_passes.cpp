@@ -163,7 +163,7 @@ void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const D
                     std::uint32_t width, std::uint32_t height) {
   // Buffers the method lacks are bound to the noisy input (always there) and flagged unavailable.
   const std::uint32_t available = (in.gradient ? 1u : 0u) | (in.moments ? 2u : 0u) | (in.variance ? 4u : 0u);
-  const DebugViewParams params{width, height, static_cast<std::uint32_t>(view), 0.25f, in.alpha, in.history_cap,
+  const DebugViewParams params{width, height, static_cast<std::uint32_t>(view), 0.25f, in.denoise.alpha, in.denoise.history_cap,
                                available, 0};
   add_compute_pass(graph, "debug_view", shaders::debug_view, pipelines.get(shaders::debug_view, sizeof(params)),
                    {{"depth_normal", in.depth_normal},

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "passes/compute_pass.hpp"
+#include "passes/denoise_settings.hpp"
 #include "render/scene_gpu.hpp"
 
 namespace asvgf::passes {
@@ -74,7 +75,7 @@ struct DebugViewInputs {
   std::optional<graph::ResourceId> gradient;  // 1/3 res (delta^, Delta^), when the gradient ran this frame
   std::optional<graph::ResourceId> moments;   // temporal's output (E[l], E[l^2], n)
   std::optional<graph::ResourceId> variance;  // colour with variance in .a (variance pass, or temporal's)
-  float alpha = 0.2f, history_cap = 32.0f;    // the denoiser settings the temporal pass used
+  DenoiseSettings denoise;                     // what the temporal pass used (alpha, history cap)
 };
 void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const DebugViewInputs& inputs, DebugView view,
                     std::uint32_t width, std::uint32_t height);

@@ -99,16 +99,10 @@ FrameImages Renderer::render(int frame) {
   targets_.ray_counter_state = hal::State::CopyDst;
   for (std::uint32_t b = 0; b < batches; ++b) {
     frame::FrameSettings s;
-    s.method = settings_.method;
-    s.width = settings_.width;
-    s.height = settings_.height;
-    s.denoise = settings_.denoise;
-    s.scene_moved = moved && !first;
-    s.debug_view = settings_.debug_view;
-    s.frame = static_cast<std::uint32_t>(frame) * 4096u + b;
-    s.seed = settings_.seed;
+    static_cast<frame::FrameConfig&>(s) = settings_;
     s.spp = batch_spp_;
-    s.max_bounces = settings_.max_bounces;
+    s.scene_moved = moved && !first;
+    s.frame = static_cast<std::uint32_t>(frame) * 4096u + b;
     s.accumulation_valid = b > 0 || continue_mean;
     last_graph_.emplace(builder_.build(s, scene_gpu_, targets_));
     last_compiled_.emplace(runtime_.compile(*last_graph_));

@@ -13,16 +13,10 @@
 
 namespace asvgf::render {
 
-struct RenderSettings {
-  frame::Method method = frame::Method::Asvgf;
-  std::uint32_t width = 128, height = 128;
-  std::uint32_t spp = 1;  // samples per pixel per frame (the reference method's N)
-  std::uint32_t max_bounces = 4;
-  std::uint32_t seed = 0;
-  passes::DenoiseSettings denoise;
+// The run's frame choices (method, size, spp, denoiser, ...) and how the renderer runs them.
+struct RenderSettings : frame::FrameConfig {
   // Tracing variant: empty picks ray queries when the device has them, else the software BVH.
   std::optional<bool> ray_query;
-  std::optional<passes::DebugView> debug_view;
   // Reference method: keep accumulating over frames while nothing moved (the demo's progressive
   // reference); false: every frame is its own estimate of `spp` samples.
   bool progressive = false;
