@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "frame/frame_graph.hpp"
 #include "graph/graph_runtime.hpp"
+#include "hal/validate.hpp"
 #include "hal_record/record_device.hpp"
 #include "render/scene_gpu.hpp"
 #include "scene/builtin.hpp"
@@ -37,7 +38,8 @@ int run_graph(const GraphOptions& o) {
   }
   settings.denoise.atrous_iterations = o.atrous_iterations;
 
-  hal::record::RecordDevice device;
+  const auto owned = hal::validate::wrap(std::make_unique<hal::record::RecordDevice>());
+  hal::Device& device = *owned;
   const scene::Scene scene = scene::builtin_scene(o.scene, o.animation);
   render::SceneGpu scene_gpu(device, scene, device.capabilities().ray_query);
   const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
@@ -76,6 +78,7 @@ int run_graph(const GraphOptions& o) {
     }
     runtime.execute(compiled, *commands);
     device.submit(*commands);
+    device.wait();
     commands->reset();
     targets.hdr_state = targets.display_state = hal::State::CopySrc;
   }

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "hal/validate.hpp"
 #include "hal_vulkan/vulkan.hpp"
 #include "scene/builtin.hpp"
 #include "scene/scene_file.hpp"
@@ -84,7 +85,7 @@ std::unique_ptr<hal::Device> open_device(const SceneOptions& o) {
   hal::vulkan::DeviceOptions options;
   options.adapter = o.device;
   options.validation = o.validation;
-  return hal::vulkan::create_device(options);
+  return hal::validate::wrap(hal::vulkan::create_device(options));
 }
 
 }  // namespace asvgf::cli

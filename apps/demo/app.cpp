@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "hal/validate.hpp"
 #include "hal_vulkan/vulkan.hpp"
 #include "screenshot.hpp"
 
@@ -28,7 +29,7 @@ std::unique_ptr<hal::Device> open_device(const DemoOptions& o, ValidationLog& lo
     std::fprintf(stderr, "%s\n", message.c_str());
   };
   options.instance_extensions = hal::vulkan::glfw_instance_extensions();
-  return hal::vulkan::create_device(options);
+  return hal::validate::wrap(hal::vulkan::create_device(options));
 }
 
 scene::Scene initial_scene(const DemoOptions& o) { return cli::load_scene(o.scene); }

@@ -121,38 +121,7 @@ void VulkanDevice::destroy_accel(AccelObject& object) {
 
 AccelHandle VulkanDevice::create_blas(const BlasDesc& desc) {
   check_alive();
-  if (!capabilities().acceleration_structures)
-    throw Error(ErrorKind::Unsupported, desc.name, "acceleration structures are not supported by " + adapter().name);
-  std::vector<const BufferObject*> inputs;
-  if (desc.geometry == BlasGeometry::Boxes) {
-    if (desc.box_count == 0) throw Error(ErrorKind::InvalidDescriptor, desc.name, "BLAS of boxes needs at least one box");
-    const BufferObject& box_buffer = buffers.get(desc.boxes.id, "buffer");
-    if (box_buffer.desc.size < std::uint64_t{desc.box_count} * sizeof(VkAabbPositionsKHR))
-      throw Error(ErrorKind::InvalidDescriptor, desc.name,
-                  "box buffer '" + box_buffer.name + "' is smaller than " + std::to_string(desc.box_count) +
-                      " boxes of 24 bytes");
-    inputs.push_back(&box_buffer);
-  } else {
-    if (desc.vertex_count == 0 || desc.triangle_count == 0)
-      throw Error(ErrorKind::InvalidDescriptor, desc.name,
-                  "BLAS needs at least one vertex and one triangle (got " + std::to_string(desc.vertex_count) +
-                      " vertices, " + std::to_string(desc.triangle_count) + " triangles)");
-    const BufferObject& vertices = buffers.get(desc.vertices.id, "buffer");
-    const BufferObject& indices = buffers.get(desc.indices.id, "buffer");
-    if (vertices.desc.size < std::uint64_t{desc.vertex_count} * 12)
-      throw Error(ErrorKind::InvalidDescriptor, desc.name,
-                  "vertex buffer '" + vertices.name + "' is smaller than " + std::to_string(desc.vertex_count) +
-                      " float3");
-    if (indices.desc.size < std::uint64_t{desc.triangle_count} * 12)
-      throw Error(ErrorKind::InvalidDescriptor, desc.name,
-                  "index buffer '" + indices.name + "' is smaller than " + std::to_string(desc.triangle_count) +
-                      " triangles of uint32");
-    inputs = {&vertices, &indices};
-  }
-  for (const BufferObject* b : inputs)
-    if (!has(b->desc.usage, BufferUsage::AccelBuildInput))
-      throw Error(ErrorKind::InvalidUsage, b->name, "BLAS '" + desc.name + "' input needs AccelBuildInput usage");
-
+  static_assert(sizeof(VkAabbPositionsKHR) == 24, "hal::validate checks box buffers for 24-byte boxes");
   AccelObject object;
   object.name = desc.name;
   object.blas = desc;
@@ -173,11 +142,6 @@ AccelHandle VulkanDevice::create_blas(const BlasDesc& desc) {
 
 AccelHandle VulkanDevice::create_tlas(const TlasDesc& desc) {
   check_alive();
-  if (!capabilities().acceleration_structures)
-    throw Error(ErrorKind::Unsupported, desc.name, "acceleration structures are not supported by " + adapter().name);
-  if (desc.max_instances == 0 || desc.max_instances > (1u << 24))
-    throw Error(ErrorKind::InvalidDescriptor, desc.name,
-                "TLAS max_instances " + std::to_string(desc.max_instances) + " is not in 1..16777216");
   AccelObject object;
   object.name = desc.name;
   object.top = true;
@@ -236,18 +200,11 @@ void VulkanCommandList::record_build(VkCommandBuffer cmd, AccelObject& object,
   const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
   scratch_barrier(object.scratch);
   device_.fn().cmd_build_accel(cmd, 1, &info, &ranges);
-  object.recorded_build = true;
 }
 
 void VulkanCommandList::build_blas(AccelHandle handle, bool update) {
   VkCommandBuffer cmd = recording();
   AccelObject& object = device_.accels.get(handle.id, "acceleration structure");
-  if (object.top)
-    throw Error(ErrorKind::InvalidUsage, object.name, "build_blas on a top-level structure (in '" + name_ + "')");
-  if (update && !object.blas.allow_update)
-    throw Error(ErrorKind::InvalidUsage, object.name, "update requested but the BLAS was created without allow_update");
-  if (update && !object.recorded_build)
-    throw Error(ErrorKind::InvalidUsage, object.name, "update requested before any build was recorded");
   const BlasDesc& desc = object.blas;
   auto address = [&](BufferHandle b) { return b ? device_.buffers.get(b.id, "buffer").address : VkDeviceAddress{0}; };
   const auto geometry = blas_geometry(desc, address(desc.vertices), address(desc.indices), address(desc.boxes));
@@ -257,32 +214,12 @@ void VulkanCommandList::build_blas(AccelHandle handle, bool update) {
 void VulkanCommandList::build_tlas(AccelHandle handle, std::span<const TlasInstance> list, bool update) {
   VkCommandBuffer cmd = recording();
   AccelObject& object = device_.accels.get(handle.id, "acceleration structure");
-  if (!object.top)
-    throw Error(ErrorKind::InvalidUsage, object.name, "build_tlas on a bottom-level structure (in '" + name_ + "')");
-  if (list.size() > object.tlas.max_instances)
-    throw Error(ErrorKind::InvalidUsage, object.name,
-                std::to_string(list.size()) + " instances exceed max_instances " +
-                    std::to_string(object.tlas.max_instances));
-  if (update && (!object.tlas.allow_update || !object.recorded_build))
-    throw Error(ErrorKind::InvalidUsage, object.name,
-                "update needs allow_update and an earlier recorded build");
-  if (update && list.size() != object.built_instances)
-    throw Error(ErrorKind::InvalidUsage, object.name,
-                "update with " + std::to_string(list.size()) + " instances; the last build had " +
-                    std::to_string(object.built_instances) + " (an update keeps the instance count)");
 
   // Instances are copied now into the upload ring, which the build reads by device address.
   std::vector<VkAccelerationStructureInstanceKHR> data(std::max<std::size_t>(list.size(), 1));
   for (std::size_t i = 0; i < list.size(); ++i) {
     const TlasInstance& in = list[i];
     const AccelObject& blas = device_.accels.get(in.blas.id, "acceleration structure");
-    if (blas.top)
-      throw Error(ErrorKind::InvalidUsage, object.name,
-                  "instance " + std::to_string(i) + " references top-level structure '" + blas.name + "'");
-    if (in.custom_index > 0xFFFFFFu)
-      throw Error(ErrorKind::InvalidUsage, object.name,
-                  "instance " + std::to_string(i) + " custom_index " + std::to_string(in.custom_index) +
-                      " does not fit in 24 bits");
     VkAccelerationStructureInstanceKHR& out = data[i];
     std::memcpy(out.transform.matrix, in.transform.data(), sizeof(out.transform.matrix));  // both row-major 3x4
     out.instanceCustomIndex = in.custom_index;
@@ -294,7 +231,6 @@ void VulkanCommandList::build_tlas(AccelHandle handle, std::span<const TlasInsta
   const VkDeviceSize offset = upload(data.data(), data.size() * sizeof(data[0]), 16);
   const auto geometry = instances(device_.ring().address + offset);
   record_build(cmd, object, geometry, static_cast<std::uint32_t>(list.size()), object.tlas.allow_update, update);
-  object.built_instances = static_cast<std::uint32_t>(list.size());
 }
 
 }  // namespace hal::vulkan

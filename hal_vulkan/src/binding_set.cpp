@@ -1,5 +1,5 @@
-// Binding sets: named C++ resources checked against the shader reflection, written into
-// descriptor sets. The uniform block is bound implicitly to the device's upload ring.
+// Binding sets: named C++ resources written into descriptor sets. The uniform block is bound
+// implicitly to the device's upload ring.
 #include <string>
 
 #include "check.hpp"
@@ -9,110 +9,20 @@ namespace hal::vulkan {
 
 VkDescriptorType descriptor_type(BindingKind kind);
 
-namespace {
-
-std::string describe(const ShaderBinding& b) {
-  return "'" + std::string(b.name) + "' (" + std::string(to_string(b.kind)) + ", set " + std::to_string(b.set) +
-         " binding " + std::to_string(b.binding) + ")";
-}
-
-const char* resource_kind(ResourceKind kind) {
-  switch (kind) {
-    case ResourceKind::Buffer: return "buffer";
-    case ResourceKind::Image: return "image";
-    case ResourceKind::Accel: return "acceleration structure";
-  }
-  return "resource";
-}
-
-bool kinds_match(ResourceKind resource, BindingKind binding) {
-  switch (binding) {
-    case BindingKind::StorageBuffer: return resource == ResourceKind::Buffer;
-    case BindingKind::SampledImage:
-    case BindingKind::StorageImage: return resource == ResourceKind::Image;
-    case BindingKind::AccelerationStructure: return resource == ResourceKind::Accel;
-    case BindingKind::UniformBuffer: return false;
-  }
-  return false;
-}
-
-}  // namespace
-
 BindingSetHandle VulkanDevice::create_binding_set(const BindingSetDesc& desc) {
   check_alive();
   const PipelineObject& pipeline = pipelines.get(desc.pipeline.id, "pipeline");
   const ShaderInfo& shader = *pipeline.shader;
-  const std::string shader_name(shader.name);
 
-  // Check every entry before creating anything.
+  // Entries by binding index (hal::validate checked names, kinds, usages and formats).
   BindingSetObject object;
   object.name = desc.name;
   object.pipeline = desc.pipeline;
   object.shader = pipeline.shader;
   object.bound.resize(shader.bindings.size());
-  std::vector<std::string> entry_of(shader.bindings.size());
-  for (const auto& entry : desc.entries) {
-    std::size_t index = shader.bindings.size();
-    for (std::size_t i = 0; i < shader.bindings.size(); ++i)
-      if (shader.bindings[i].name == entry.name) index = i;
-    const std::string cpp = "C++ entry '" + entry.name + "' (" + resource_kind(entry.resource.kind) + ")";
-    if (index == shader.bindings.size()) {
-      std::string known;
-      for (const auto& b : shader.bindings) known += (known.empty() ? "" : ", ") + describe(b);
-      throw Error(ErrorKind::BindingMismatch, desc.name,
-                  cpp + " names no binding of shader '" + shader_name + "'; the shader has " +
-                      (known.empty() ? "no bindings" : known));
-    }
-    const ShaderBinding& binding = shader.bindings[index];
-    if (binding.kind == BindingKind::UniformBuffer)
-      throw Error(ErrorKind::BindingMismatch, desc.name,
-                  cpp + " binds shader '" + shader_name + "' uniform block " + describe(binding) +
-                      ", which is bound implicitly from DispatchDesc::uniforms");
-    if (!kinds_match(entry.resource.kind, binding.kind))
-      throw Error(ErrorKind::BindingMismatch, desc.name,
-                  cpp + " does not match shader '" + shader_name + "' binding " + describe(binding));
-    if (object.bound[index].id != 0)
-      throw Error(ErrorKind::BindingMismatch, desc.name,
-                  cpp + " binds shader '" + shader_name + "' binding " + describe(binding) + " a second time");
-    switch (entry.resource.kind) {
-      case ResourceKind::Buffer: {
-        const BufferObject& b = buffers.get(entry.resource.id, "buffer");
-        if (!has(b.desc.usage, BufferUsage::Storage))
-          throw Error(ErrorKind::InvalidUsage, b.name,
-                      "bound to storage binding " + describe(binding) + " of set '" + desc.name +
-                          "' but created without Storage usage");
-        if (b.desc.size > limits_.maxStorageBufferRange)
-          throw Error(ErrorKind::InvalidUsage, b.name,
-                      "is " + describe_bytes(b.desc.size) + ", larger than the device's largest storage binding (" +
-                          describe_bytes(limits_.maxStorageBufferRange) + ")");
-        break;
-      }
-      case ResourceKind::Image: {
-        const ImageObject& i = images.get(entry.resource.id, "image");
-        const bool storage = binding.kind == BindingKind::StorageImage;
-        if (!has(i.desc.usage, storage ? ImageUsage::Storage : ImageUsage::Sampled))
-          throw Error(ErrorKind::InvalidUsage, i.name,
-                      "bound to " + describe(binding) + " of set '" + desc.name + "' but created without " +
-                          (storage ? "Storage" : "Sampled") + " usage");
-        if (storage && binding.format != Format::Undefined && binding.format != i.desc.format)
-          throw Error(ErrorKind::BindingMismatch, desc.name,
-                      cpp + " is image '" + i.name + "' of format " + std::string(format_name(i.desc.format)) +
-                          " but shader '" + shader_name + "' binding " + describe(binding) + " is declared " +
-                          std::string(format_name(binding.format)));
-        break;
-      }
-      case ResourceKind::Accel: {
-        const AccelObject& a = accels.get(entry.resource.id, "acceleration structure");
-        if (!a.top)
-          throw Error(ErrorKind::BindingMismatch, desc.name,
-                      cpp + " is bottom-level structure '" + a.name + "' but shader '" + shader_name + "' binding " +
-                          describe(binding) + " traces a top-level one");
-        break;
-      }
-    }
-    object.bound[index] = entry.resource;
-    entry_of[index] = entry.name;
-  }
+  for (const auto& entry : desc.entries)
+    if (const ShaderBinding* b = shader.find(entry.name))
+      object.bound[static_cast<std::size_t>(b - shader.bindings.data())] = entry.resource;
 
   // A pool sized for exactly this set, so binding sets never compete for descriptors.
   std::vector<VkDescriptorPoolSize> sizes;

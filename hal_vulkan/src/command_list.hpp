@@ -68,7 +68,6 @@ class VulkanCommandList final : public hal::CommandList {
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;
   Phase phase_ = Phase::Initial;
   std::uint64_t serial_ = 0;  // submission serial of the last submit; 0: never submitted
-  int label_depth_ = 0;
   std::vector<VkDeviceSize> chunks_;  // ring ranges this list owns
   VkDeviceSize chunk_begin_ = 0, chunk_used_ = 0, chunk_size_ = 0;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> timer_writes_;  // (timer id, region)

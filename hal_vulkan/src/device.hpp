@@ -68,8 +68,6 @@ struct AccelObject {
   VkBuffer scratch = VK_NULL_HANDLE;  // build and update scratch, owned by the structure
   Allocation scratch_memory;
   VkDeviceAddress scratch_address = 0;  // aligned for minAccelerationStructureScratchOffsetAlignment
-  bool recorded_build = false;           // a build was recorded, so update may follow
-  std::uint32_t built_instances = 0;     // TLAS: instance count of the last recorded build
 };
 
 struct TimerObject {

@@ -8,6 +8,7 @@
 #include <array>
 
 #include "check.hpp"
+#include "hal/validate.hpp"
 #include "command_list.hpp"
 #include "device.hpp"
 #include "hal_vulkan/presenter.hpp"
@@ -140,7 +141,8 @@ struct Presenter::Impl {
 };
 
 Presenter::Presenter(hal::Device& device, GLFWwindow* window, bool vsync) {
-  auto* vulkan = dynamic_cast<VulkanDevice*>(&device);
+  // A device behind the validation layer presents through the Vulkan device it wraps.
+  auto* vulkan = dynamic_cast<VulkanDevice*>(&hal::validate::unwrap(device));
   if (!vulkan) throw Error(ErrorKind::InvalidUsage, "presenter", "the device is not a Vulkan device");
   if (!window) throw Error(ErrorKind::InvalidUsage, "presenter", "no window");
   if (!vulkan->swapchain_enabled())

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hal/hal.hpp"
+#include "hal/validate.hpp"
 
 namespace conformance {
 
@@ -31,15 +32,16 @@ struct Register {
   explicit Register(Backend backend) { backends().push_back(std::move(backend)); }
 };
 
-// A device of one backend for the length of a test; on destruction it destroys the device and
+// A device of one backend, behind the validation layer (hal/validate.hpp), for the length of a
+// test; on destruction it destroys the device and
 // fails the test on any message the backend reported.
 class TestDevice {
  public:
   explicit TestDevice(const Backend& backend) : backend_(backend.name), collect_(backend.collect) {
-    device_ = backend.create(messages_);
+    device_ = hal::validate::wrap(backend.create(messages_));
   }
   ~TestDevice() {
-    if (collect_ && device_) collect_(*device_, messages_);
+    if (collect_ && device_) collect_(hal::validate::unwrap(*device_), messages_);
     device_.reset();
     for (const auto& m : messages_) FAIL_CHECK(backend_ << " reported: " << m);
   }

@@ -8,6 +8,8 @@
 #include "frame/frame_graph.hpp"
 #include "scene/builtin.hpp"
 #include "graph/graph_runtime.hpp"
+#include "checked_record.hpp"
+#include "hal/error.hpp"
 #include "hal_record/record_device.hpp"
 
 using namespace asvgf;
@@ -24,8 +26,7 @@ std::string messages(const hal::record::RecordDevice& d) {
 }
 
 // The built-in room on the recording HAL, with output images, run frame after frame.
-struct Scene {
-  hal::record::RecordDevice device;
+struct Scene : CheckedRecord {
   scene::Scene room = scene::builtin_scene("cornell", "light-exit");
   render::SceneGpu gpu{device, room, true};
   hal::ImageHandle hdr, display;
@@ -71,6 +72,7 @@ void run_frames(Scene& scene, frame::FrameSettings settings, int frames,
     }
     runtime.execute(compiled, *cmd);
     scene.device.submit(*cmd);
+    scene.device.wait();
     cmd->reset();
     scene.frame_done();
   }
@@ -87,7 +89,7 @@ TEST_CASE("every method's frame compiles and runs 4 frames on the recording HAL 
     s.width = 20;
     s.height = 14;
     run_frames(scene, s, 4, {}, 3);  // frames 3..6: still, then moving
-    CHECK_MESSAGE(scene.device.reports().empty(), messages(scene.device));
+    CHECK_MESSAGE(scene.record.reports().empty(), messages(scene.record));
     // Frames alternate between moving and still scenes: gradient passes come and go.
     Scene scene2;
     graph::GraphRuntime runtime(scene2.device);
@@ -100,17 +102,19 @@ TEST_CASE("every method's frame compiles and runs 4 frames on the recording HAL 
       auto g = builder.build(s, scene2.gpu, scene2.targets(s.width, s.height));
       runtime.execute(runtime.compile(g), *cmd);
       scene2.device.submit(*cmd);
+      scene2.device.wait();
       cmd->reset();
       scene2.frame_done();
     }
-    CHECK_MESSAGE(scene2.device.reports().empty(), messages(scene2.device));
+    CHECK_MESSAGE(scene2.record.reports().empty(), messages(scene2.record));
   }
 }
 
 // Runs the light-exit frames 4..6 (the light moves: every asvgf pass runs) with one declared
 // access of one pass deleted, and says who caught it.
 // Culled: the pass wrote nothing else, so the graph left it out (dump() lists it with the reason).
-enum class Caught { Compile, Execute, RecordingHal, Culled, Nothing };
+// Validation: the HAL validation layer refused a command (a binding left unbound).
+enum class Caught { Compile, Execute, RecordingHal, Culled, Validation, Nothing };
 Caught delete_one_access(const frame::FrameSettings& s, const std::string& pass, const graph::PassAccess& access,
                          bool binding_checks) {
   Scene scene;
@@ -131,8 +135,10 @@ Caught delete_one_access(const frame::FrameSettings& s, const std::string& pass,
         4, binding_checks, &culled);
   } catch (const graph::GraphError& e) {
     return std::string(e.what()).find("does not declare") != std::string::npos ? Caught::Execute : Caught::Compile;
+  } catch (const hal::Error&) {
+    return Caught::Validation;
   }
-  if (!scene.device.reports().empty()) return Caught::RecordingHal;
+  if (!scene.record.reports().empty()) return Caught::RecordingHal;
   return std::find(culled.begin(), culled.end(), pass) != culled.end() ? Caught::Culled : Caught::Nothing;
 }
 
@@ -166,7 +172,7 @@ frame::FrameSettings small_asvgf() {
 
 TEST_CASE("deleting any one declared access of an asvgf pass is caught by the graph or the recording HAL") {
   const auto s = small_asvgf();
-  int by[5] = {0, 0, 0, 0, 0};
+  int by[6] = {0, 0, 0, 0, 0, 0};
   for (const auto& m : asvgf_mutations(s)) {
     CAPTURE(m.pass);
     CAPTURE(m.resource);
@@ -176,7 +182,8 @@ TEST_CASE("deleting any one declared access of an asvgf pass is caught by the gr
     ++by[static_cast<int>(c)];
   }
   MESSAGE(by[0] << " refused at compile, " << by[1] << " at execute (bound but undeclared), " << by[2]
-                << " reported by the recording HAL, " << by[3] << " culled the pass (its only write deleted)");
+                << " reported by the recording HAL, " << by[3] << " culled the pass (its only write deleted), " << by[4]
+                << " refused by the HAL validation layer");
 }
 
 TEST_CASE("without the graph's binding check, the recording HAL catches every deleted write on its own") {
@@ -233,7 +240,8 @@ TEST_CASE("culling: an output nobody reads culls its pass, a still frame culls t
 }
 
 TEST_CASE("on a small known graph the derived barriers are exactly the expected ones") {
-  hal::record::RecordDevice device;
+  CheckedRecord checked;
+  hal::Device& device = checked.device;
   graph::GraphRuntime runtime(device);
   graph::RenderGraph g;
   const auto a = g.add_image("a", 4, 4, hal::Format::RGBA16F);
@@ -256,6 +264,7 @@ TEST_CASE("on a small known graph the derived barriers are exactly the expected 
   auto cmd = device.create_command_list("known");
   runtime.execute(f0, *cmd);
   device.submit(*cmd);
+  device.wait();
   cmd->reset();
   // Next frame: h's other version, written last frame, is the history; nothing is cleared. The
   // version written now was last frame's history (shader-read) and was never written. The
@@ -270,11 +279,13 @@ TEST_CASE("on a small known graph the derived barriers are exactly the expected 
                                                            {h, false, State::ShaderRead, State::ShaderWrite}});
   runtime.execute(f1, *cmd);
   device.submit(*cmd);
-  CHECK_MESSAGE(device.reports().empty(), messages(device));
+  device.wait();
+  CHECK_MESSAGE(checked.record.reports().empty(), messages(checked.record));
 }
 
 TEST_CASE("history ping-pong: a pass reads last frame's version, cleared on the first frame") {
-  hal::record::RecordDevice device;
+  CheckedRecord checked;
+  hal::Device& device = checked.device;
   graph::GraphRuntime runtime(device);
   hal::Resource written[3], read[3];
   bool valid[3];
@@ -290,6 +301,7 @@ TEST_CASE("history ping-pong: a pass reads last frame's version, cleared on the 
     auto cmd = device.create_command_list("f");
     runtime.execute(runtime.compile(g), *cmd);
     device.submit(*cmd);
+    device.wait();
   }
   CHECK_FALSE(valid[0]);
   CHECK(valid[1]);
@@ -297,11 +309,12 @@ TEST_CASE("history ping-pong: a pass reads last frame's version, cleared on the 
   CHECK(read[1] == written[0]);
   CHECK(read[2] == written[1]);
   CHECK_FALSE(written[0] == written[1]);
-  CHECK_MESSAGE(device.reports().empty(), messages(device));
+  CHECK_MESSAGE(checked.record.reports().empty(), messages(checked.record));
 }
 
 TEST_CASE("compile errors name the pass and the resource") {
-  hal::record::RecordDevice device;
+  CheckedRecord checked;
+  hal::Device& device = checked.device;
   graph::GraphRuntime runtime(device);
   auto expect_error = [&](const graph::RenderGraph& g, const std::vector<std::string>& words) {
     try {
@@ -343,7 +356,8 @@ TEST_CASE("aliasing: seeded random graphs never alias two transients whose lifet
   for (std::uint32_t seed = 1; seed <= 40; ++seed) {
     CAPTURE(seed);
     std::mt19937 rng(seed);
-    hal::record::RecordDevice device;
+    CheckedRecord checked;
+  hal::Device& device = checked.device;
     graph::GraphRuntime runtime(device);
     graph::RenderGraph g;
     std::vector<graph::ResourceId> made;
@@ -376,7 +390,8 @@ TEST_CASE("aliasing: seeded random graphs never alias two transients whose lifet
     auto cmd = device.create_command_list("random");
     runtime.execute(compiled, *cmd);
     device.submit(*cmd);
-    CHECK_MESSAGE(device.reports().empty(), messages(device));
+    device.wait();
+    CHECK_MESSAGE(checked.record.reports().empty(), messages(checked.record));
   }
   MESSAGE("transient memory over 40 graphs: " << with << " bytes with aliasing, " << without << " without");
   CHECK(with < without);

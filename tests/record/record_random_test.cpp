@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "checked_record.hpp"
 #include "hal_record/record_device.hpp"
 #include "test_shaders.hpp"
 
@@ -94,7 +95,8 @@ std::vector<Step> generate(std::uint32_t seed, int length) {
 std::size_t run(const std::vector<Step>& steps, int skip, bool checks = true) {
   RecordOptions options;
   options.checks = checks;
-  RecordDevice device(options);
+  CheckedRecord checked(options);
+  hal::Device& device = checked.device;
   std::vector<Resource> resources;
   for (int i = 0; i < kBuffers; ++i)
     resources.push_back(device.create_buffer(
@@ -134,7 +136,8 @@ std::size_t run(const std::vector<Step>& steps, int skip, bool checks = true) {
     cmd->end_label();
   }
   device.submit(*cmd);
-  return device.reports().size();
+  device.wait();
+  return checked.record.reports().size();
 }
 
 }  // namespace

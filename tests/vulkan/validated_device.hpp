@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hal/hal.hpp"
+#include "hal/validate.hpp"
 #include "hal_vulkan/vulkan.hpp"
 
 struct ValidatedDevice {
@@ -17,7 +18,7 @@ struct ValidatedDevice {
   explicit ValidatedDevice(hal::vulkan::DeviceOptions options = {}) {
     options.validation = true;
     options.on_validation_message = [this](const std::string& m) { messages.push_back(m); };
-    device = hal::vulkan::create_device(options);
+    device = hal::validate::wrap(hal::vulkan::create_device(options));
   }
   ~ValidatedDevice() {
     device.reset();

@@ -8,10 +8,11 @@
 //   - reports (never throws) ordering mistakes, naming both commands by debug-label path and the
 //     resource: read-after-write, write-after-read and write-after-write with no barrier between;
 //     a barrier whose `before` is not the tracked state; a use in the wrong state; a use of a
-//     destroyed resource; a read of a resource nothing has written; a dispatch with an unbound
-//     binding; a resource bound or copied with a usage it was not created for.
-// Calls that break the interface contract itself (unknown handle, binding name that the shader
-// does not have, wrong uniform size) throw hal::Error exactly as a real backend would.
+//     destroyed resource; a read of a resource nothing has written.
+// Calls that break the interface contract itself (binding name that the shader does not have,
+// wrong uniform size, unbound binding, wrong usage) are the validation layer's to refuse
+// (hal/validate.hpp): use this device behind hal::validate::wrap, as every caller in the project
+// does. On its own it only throws InvalidHandle for handles it never created.
 //
 // Thread safety: like every hal::Device, externally synchronised.
 #pragma once
@@ -32,8 +33,6 @@ enum class ReportKind {
   WrongState,            // a command uses a resource in a state it cannot use it in
   UseOfDestroyed,
   ReadBeforeWrite,       // read of a resource nothing has written (or whose contents were discarded)
-  UnboundBinding,
-  UsageMismatch,         // bound or copied with a usage it was not created with
 };
 std::string_view to_string(ReportKind kind);
 
