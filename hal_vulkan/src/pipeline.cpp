@@ -1,5 +1,4 @@
-// Compute pipelines from hal::ShaderInfo: descriptor set layouts from the reflection,
-// specialization constants by name, device capability checks.
+// Compute pipelines from hal::ShaderInfo: descriptor set layouts from the reflection.
 #include <map>
 #include <string>
 
@@ -25,18 +24,6 @@ PipelineHandle VulkanDevice::create_pipeline(const ComputePipelineDesc& desc) {
   const ShaderInfo& shader = *desc.shader;
   if (shader.spirv.empty())
     throw Error(ErrorKind::InvalidDescriptor, desc.name, "shader '" + std::string(shader.name) + "' has no SPIR-V");
-
-  // Specializations by name (hal::validate checked that each names a constant).
-  std::vector<VkSpecializationMapEntry> entries;
-  std::vector<std::uint32_t> values;
-  for (const auto& s : desc.specializations) {
-    const SpecConstant* found = nullptr;
-    for (const auto& c : shader.spec_constants)
-      if (c.name == s.name) found = &c;
-    if (!found) continue;
-    entries.push_back({found->id, static_cast<std::uint32_t>(values.size() * 4), 4});
-    values.push_back(s.value);
-  }
 
   PipelineObject object;
   object.name = desc.name;
@@ -85,17 +72,11 @@ PipelineHandle VulkanDevice::create_pipeline(const ComputePipelineDesc& desc) {
     module_info.pCode = shader.spirv.data();
     check_result(vkCreateShaderModule(device_, &module_info, nullptr, &module), "vkCreateShaderModule", desc.name);
 
-    VkSpecializationInfo specialization{};
-    specialization.mapEntryCount = static_cast<std::uint32_t>(entries.size());
-    specialization.pMapEntries = entries.data();
-    specialization.dataSize = values.size() * 4;
-    specialization.pData = values.data();
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     info.stage.module = module;
     info.stage.pName = "main";
-    info.stage.pSpecializationInfo = entries.empty() ? nullptr : &specialization;
     info.layout = object.layout;
     check_result(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &object.pipeline),
                  "vkCreateComputePipelines", desc.name);

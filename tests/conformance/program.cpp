@@ -14,7 +14,7 @@ std::vector<float> run_multi_dispatch_program(hal::Device& device, const std::ve
   const auto a = device.create_buffer({"program a", bytes, usage});
   const auto b = device.create_buffer({"program b", bytes, usage});
   const auto c = device.create_buffer({"program c", bytes, usage});
-  const auto pipeline = device.create_pipeline({"program scale", &shader, {}});
+  const auto pipeline = device.create_pipeline({"program scale", &shader});
   const auto first = device.create_binding_set({"program a->b", pipeline, {{"src", a}, {"dst", b}}});
   const auto second = device.create_binding_set({"program c->a", pipeline, {{"src", c}, {"dst", a}}});
   const std::uint32_t groups = (count + shader.workgroup_size[0] - 1) / shader.workgroup_size[0];

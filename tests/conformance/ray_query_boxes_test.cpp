@@ -114,7 +114,7 @@ TEST_CASE(
     const auto hit_buffer =
         device.create_buffer({"hits", rays.size() * 16, hal::BufferUsage::Storage | hal::BufferUsage::CopySrc});
     device.upload_buffer(ray_buffer, 0, as_bytes(rays));
-    const auto pipeline = device.create_pipeline({"ray query boxes", &shader, {}});
+    const auto pipeline = device.create_pipeline({"ray query boxes", &shader});
     const auto set = device.create_binding_set(
         {"ray query boxes set",
          pipeline,

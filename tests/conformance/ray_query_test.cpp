@@ -176,7 +176,7 @@ class DeviceScene {
                                             ib, static_cast<std::uint32_t>(mesh.indices.size() / 3), true}));
     }
     tlas_ = device.create_tlas({"scene tlas", max_instances, true});
-    pipeline_ = device.create_pipeline({"ray query", &shader_, {}});
+    pipeline_ = device.create_pipeline({"ray query", &shader_});
     cmd_ = device.create_command_list("ray query");
   }
 

@@ -45,11 +45,6 @@ struct AdapterInfo {
 struct ComputePipelineDesc {
   std::string name;
   const ShaderInfo* shader = nullptr;
-  struct Specialization {
-    std::string name;  // must name a SpecConstant of the shader
-    std::uint32_t value = 0;
-  };
-  std::vector<Specialization> specializations;
 };
 
 struct BindingSetDesc {
@@ -76,7 +71,7 @@ class Device {
   // for a format or feature the device lacks, OutOfMemory when allocation fails.
   virtual BufferHandle create_buffer(const BufferDesc& desc) = 0;
   virtual ImageHandle create_image(const ImageDesc& desc) = 0;
-  // Checks the shader's reflection (and the specializations) against the device: a ray-query
+  // Checks the shader's reflection against the device: a ray-query
   // shader on a device without ray queries is Unsupported.
   virtual PipelineHandle create_pipeline(const ComputePipelineDesc& desc) = 0;
   // Every entry must name a binding of the pipeline's shader with a matching kind (buffer,

@@ -42,11 +42,6 @@ struct UniformMember {
   std::uint32_t size = 0;    // bytes
 };
 
-struct SpecConstant {
-  std::string_view name;
-  std::uint32_t id = 0;
-  std::uint32_t default_value = 0;  // raw 32-bit pattern (int, uint, float or bool)
-};
 
 struct ShaderInfo {
   std::string_view name;  // "<shader>" or "<shader>.<variant>"
@@ -55,7 +50,6 @@ struct ShaderInfo {
   std::array<std::uint32_t, 3> workgroup_size{1, 1, 1};
   std::uint32_t uniform_block_size = 0;  // 0: the shader has no uniform block
   std::span<const UniformMember> uniform_members;
-  std::span<const SpecConstant> spec_constants;
   bool uses_ray_query = false;
 
   // The binding with this name, or nullptr.

@@ -82,18 +82,6 @@ class ValidatingDevice final : public Device {
         throw Error(ErrorKind::Unsupported, desc.name,
                     "shader binding '" + std::string(b.name) + "' is an acceleration structure, which " +
                         adapter().name + " lacks");
-    for (const auto& s : desc.specializations) {
-      std::string known;
-      bool found = false;
-      for (const auto& c : desc.shader->spec_constants) {
-        found = found || c.name == s.name;
-        known += (known.empty() ? "" : ", ") + std::string(c.name);
-      }
-      if (!found)
-        throw Error(ErrorKind::BindingMismatch, desc.name,
-                    "specialization '" + s.name + "' names no specialization constant of shader '" + shader +
-                        "' (it has: " + (known.empty() ? "none" : known) + ")");
-    }
     const PipelineHandle h = inner_->create_pipeline(desc);
     objects_.pipelines.add(h.id, {desc.name, desc.shader});
     return h;

@@ -39,11 +39,6 @@ std::string header_text(const Options& o, const Reflection& r, const std::vector
     h << "    {.name = \"" << m.name << "\", .offset = " << m.offset << ", .size = " << m.size << "},\n";
   h << "}};\n\n";
 
-  h << "inline constexpr std::array<hal::SpecConstant, " << r.spec_constants.size() << "> spec_constants = {{\n";
-  for (const auto& s : r.spec_constants)
-    h << "    {.name = \"" << s.name << "\", .id = " << s.id << ", .default_value = " << hex(s.default_value) << "},\n";
-  h << "}};\n\n";
-
   h << "}  // namespace detail::" << id << "\n\n"
     << "inline constexpr hal::ShaderInfo " << id << " = {\n"
     << "    .name = \"" << o.full_name() << "\",\n"
@@ -53,7 +48,6 @@ std::string header_text(const Options& o, const Reflection& r, const std::vector
     << "},\n"
     << "    .uniform_block_size = " << r.uniform_block_size << ",\n"
     << "    .uniform_members = detail::" << id << "::uniform_members,\n"
-    << "    .spec_constants = detail::" << id << "::spec_constants,\n"
     << "    .uses_ray_query = " << (r.uses_ray_query ? "true" : "false") << ",\n"
     << "};\n\n"
     << "}  // namespace asvgf::shaders\n";

@@ -18,9 +18,6 @@ std::string json_text(const Options& o, const Reflection& r, const Targets& targ
   }
   json members = json::array();
   for (const auto& m : r.uniform_members) members.push_back({{"name", m.name}, {"offset", m.offset}, {"size", m.size}});
-  json specs = json::array();
-  for (const auto& s : r.spec_constants)
-    specs.push_back({{"name", s.name}, {"id", s.id}, {"default_value", s.default_value}});
 
   json doc = {
       {"name", o.full_name()},
@@ -31,7 +28,6 @@ std::string json_text(const Options& o, const Reflection& r, const Targets& targ
       {"bindings", bindings},
       {"uniform_block_size", r.uniform_block_size},
       {"uniform_members", members},
-      {"spec_constants", specs},
       {"uses_ray_query", r.uses_ray_query},
       {"targets", targets.emitted},
       {"skipped_targets", targets.skipped},

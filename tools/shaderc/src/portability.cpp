@@ -47,6 +47,9 @@ std::vector<std::string> check_portability(const Reflection& r, const std::strin
   if (r.uniform_block_count > 1)
     fail("pass parameters in one uniform block", std::to_string(r.uniform_block_count) + " uniform blocks",
          "the HAL (DispatchDesc::uniforms fills one block)");
+  for (const auto& name : r.specialization_constants)
+    fail("pass parameters in one uniform block", "specialization constant '" + name + "'",
+         "the HAL (pipelines take no specializations: use a uniform member or a shader variant)");
   for (const auto& what : r.unsupported)
     fail("bind only uniform/storage buffers, texture2D, storage images and acceleration structures", what,
          "the HAL (hal::BindingKind has no kind for it)");

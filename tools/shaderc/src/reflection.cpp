@@ -145,7 +145,7 @@ Reflection reflect(const std::vector<std::uint32_t>& spirv, const std::string& s
     });
 
     for (const auto& sc : c.get_specialization_constants())
-      out.spec_constants.push_back({c.get_name(sc.id), sc.constant_id, c.get_constant(sc.id).scalar()});
+      out.specialization_constants.push_back(c.get_name(sc.id));
 
     const auto& caps = c.get_declared_capabilities();
     out.uses_ray_query = std::find(caps.begin(), caps.end(), spv::CapabilityRayQueryKHR) != caps.end();

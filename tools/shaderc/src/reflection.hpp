@@ -30,19 +30,13 @@ struct UniformMember {
   std::uint32_t size = 0;
 };
 
-struct SpecConstant {
-  std::string name;
-  std::uint32_t id = 0;
-  std::uint32_t default_value = 0;
-};
-
 struct Reflection {
   std::array<std::uint32_t, 3> workgroup_size{1, 1, 1};
   std::vector<Binding> bindings;  // sorted by (set, binding)
   std::uint32_t uniform_block_count = 0;
   std::uint32_t uniform_block_size = 0;
   std::vector<UniformMember> uniform_members;
-  std::vector<SpecConstant> spec_constants;
+  std::vector<std::string> specialization_constants;  // names; the HAL has none, so they are refused
   bool uses_ray_query = false;
   bool uses_image_atomics = false;
   // Resources the HAL has no binding kind for (push constants, samplers, ...), described.
