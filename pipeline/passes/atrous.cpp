@@ -11,13 +11,8 @@
 namespace asvgf::passes {
 namespace {
 
-struct Uniforms {
-  std::uint32_t width, height;
-  std::int32_t step;
-  std::uint32_t kernel;
-  float sigma_z, sigma_n, sigma_l;
-};
-static_assert(sizeof(Uniforms) == 28);
+// The uniform block as the shader tool generated it (every variant has the same block).
+using Uniforms = asvgf::shaders::atrous_plain_uniforms::Params;
 
 }  // namespace
 
@@ -29,14 +24,7 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
   std::vector<Binding> bindings{{"color_in", r.color_in}, {"depth_normal", r.depth_normal}, {"color_out", r.color_out}};
   if (r.color_history) bindings.push_back({"color_history", *r.color_history});
   const hal::ShaderInfo& shader = r.color_history ? asvgf::shaders::atrous_history : asvgf::shaders::atrous_plain;
-  const auto pipeline = pipelines.get(shader, sizeof(Uniforms),
-                                      {{"width", offsetof(Uniforms, width)},
-                                       {"height", offsetof(Uniforms, height)},
-                                       {"step", offsetof(Uniforms, step)},
-                                       {"kernel", offsetof(Uniforms, kernel)},
-                                       {"sigma_z", offsetof(Uniforms, sigma_z)},
-                                       {"sigma_n", offsetof(Uniforms, sigma_n)},
-                                       {"sigma_l", offsetof(Uniforms, sigma_l)}});
+  const auto pipeline = pipelines.get<Uniforms>(shader);
   return add_compute_pass(graph, "atrous." + std::to_string(iteration + 1), shader, pipeline, std::move(bindings),
                           to_bytes(u), {u.width, u.height, 1});
 }

@@ -7,12 +7,8 @@
 namespace asvgf::passes {
 namespace {
 
-struct Uniforms {
-  std::uint32_t width, height;
-  float exposure;
-  std::uint32_t tonemap;
-};
-static_assert(sizeof(Uniforms) == 16);
+// The shader's uniform block, as the shader tool generated it.
+using Uniforms = asvgf::shaders::composite_uniforms::Params;
 
 }  // namespace
 
@@ -21,11 +17,7 @@ graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipel
   const auto& decl = graph.resource(r.hdr);
   const Uniforms u{decl.width, decl.height, s.exposure, static_cast<std::uint32_t>(s.tonemap)};
   const hal::ShaderInfo& shader = asvgf::shaders::composite;
-  const auto pipeline = pipelines.get(shader, sizeof(Uniforms),
-                                      {{"width", offsetof(Uniforms, width)},
-                                       {"height", offsetof(Uniforms, height)},
-                                       {"exposure", offsetof(Uniforms, exposure)},
-                                       {"tonemap", offsetof(Uniforms, tonemap)}});
+  const auto pipeline = pipelines.get<Uniforms>(shader);
   return add_compute_pass(graph, "composite", shader, pipeline,
                           {{"illumination", r.illumination},
                            {"albedo", r.albedo},

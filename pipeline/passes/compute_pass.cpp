@@ -1,5 +1,6 @@
 #include "passes/compute_pass.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "hal/error.hpp"
@@ -15,39 +16,30 @@ PipelineCache::~PipelineCache() {
   }
 }
 
-void check_uniform_layout(const hal::ShaderInfo& shader, std::size_t size, std::initializer_list<UniformField> fields) {
+hal::PipelineHandle PipelineCache::get(const hal::ShaderInfo& shader, std::size_t size,
+                                       const hal::ShaderInfo& layout_of) {
+  if (auto it = pipelines_.find(&shader); it != pipelines_.end()) return it->second;
   const std::string object(shader.name);
+  const std::string cpp = "the C++ struct generated from '" + std::string(layout_of.name) + "'";
   if (shader.uniform_block_size != size)
     throw hal::Error(hal::ErrorKind::BindingMismatch, object,
                      "uniform block is " + std::to_string(shader.uniform_block_size) + " bytes in the shader, " +
-                         std::to_string(size) + " in C++");
-  for (const UniformField& f : fields) {
-    const hal::UniformMember* found = nullptr;
-    for (const auto& m : shader.uniform_members)
-      if (m.name == f.name) found = &m;
-    if (!found)
+                         std::to_string(size) + " in " + cpp);
+  const auto& ours = shader.uniform_members;
+  const auto& theirs = layout_of.uniform_members;
+  for (std::size_t i = 0; i < std::max(ours.size(), theirs.size()); ++i) {
+    if (i >= ours.size() || i >= theirs.size() || ours[i].name != theirs[i].name)
       throw hal::Error(hal::ErrorKind::BindingMismatch, object,
-                       "uniform member '" + std::string(f.name) + "' of the C++ struct is not in the shader");
-    if (found->offset != f.offset)
+                       "uniform member " + std::to_string(i) + " is '" +
+                           (i < ours.size() ? std::string(ours[i].name) : "none") + "' in the shader, '" +
+                           (i < theirs.size() ? std::string(theirs[i].name) : "none") + "' in " + cpp);
+    if (ours[i].offset != theirs[i].offset || ours[i].size != theirs[i].size)
       throw hal::Error(hal::ErrorKind::BindingMismatch, object,
-                       "uniform member '" + std::string(f.name) + "' is at offset " + std::to_string(found->offset) +
-                           " in the shader, " + std::to_string(f.offset) + " in C++");
+                       "uniform member '" + std::string(ours[i].name) + "' is at offset " +
+                           std::to_string(ours[i].offset) + " in the shader, " + std::to_string(theirs[i].offset) +
+                           " in " + cpp);
   }
-  if (shader.uniform_members.size() != fields.size())
-    throw hal::Error(hal::ErrorKind::BindingMismatch, object,
-                     "the shader's uniform block has " + std::to_string(shader.uniform_members.size()) +
-                         " members, the C++ struct " + std::to_string(fields.size()));
-}
-
-hal::PipelineHandle PipelineCache::get(const hal::ShaderInfo& shader, std::size_t uniform_size,
-                                       std::initializer_list<UniformField> fields) {
-  if (auto it = pipelines_.find(&shader); it != pipelines_.end()) return it->second;
-  if (fields.size() > 0) check_uniform_layout(shader, uniform_size, fields);
-  if (uniform_size != shader.uniform_block_size)
-    throw hal::Error(hal::ErrorKind::BindingMismatch, std::string(shader.name),
-                     "the C++ uniform struct is " + std::to_string(uniform_size) + " bytes, the shader's block " +
-                         std::to_string(shader.uniform_block_size));
-  const auto pipeline = device_.create_pipeline({std::string(shader.name), &shader});
+  const auto pipeline = device_.create_pipeline({object, &shader});
   pipelines_.emplace(&shader, pipeline);
   return pipeline;
 }

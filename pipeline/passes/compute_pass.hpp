@@ -1,5 +1,5 @@
 // passes/compute_pass.hpp: what every compute pass shares: pipelines made from the generated shader
-// headers (checked against the C++ uniform struct), and declaring a dispatch in the render graph
+// headers (their uniform block checked against the generated C++ struct), and declaring a dispatch in the render graph
 // from one binding list, so that what the graph knows and what the shader binds cannot drift:
 // whether a binding is read or written comes from the shader's reflection, every name must be one
 // of the shader's bindings and every shader binding must be bound, and the workgroup counts come
@@ -21,15 +21,6 @@
 
 namespace asvgf::passes {
 
-// One member of a C++ uniform struct: its GLSL name and offsetof.
-struct UniformField {
-  std::string_view name;
-  std::size_t offset;
-};
-// Throws hal::Error(BindingMismatch) naming the shader and member when the struct's size or a
-// member's offset differs from the shader's reflected uniform block.
-void check_uniform_layout(const hal::ShaderInfo& shader, std::size_t size, std::initializer_list<UniformField> fields);
-
 // Creates pipelines on first use and destroys them with itself.
 class PipelineCache {
  public:
@@ -38,10 +29,15 @@ class PipelineCache {
   PipelineCache(const PipelineCache&) = delete;
   PipelineCache& operator=(const PipelineCache&) = delete;
 
-  // Throws hal::Error(BindingMismatch) when `uniform_size` is not the shader's uniform block size,
-  // or (when `fields` are given) a member's offset differs; checked when the pipeline is created.
-  hal::PipelineHandle get(const hal::ShaderInfo& shader, std::size_t uniform_size,
-                          std::initializer_list<UniformField> fields = {});
+  // The pipeline of `shader`, filled with `Uniforms`: the struct the shader tool generated for this
+  // shader or another variant of it (shaders::<name>_uniforms::Params). Throws
+  // hal::Error(BindingMismatch) naming the shader and member when the variant's block differs.
+  template <typename Uniforms>
+  hal::PipelineHandle get(const hal::ShaderInfo& shader) {
+    return get(shader, sizeof(Uniforms), Uniforms::shader);
+  }
+  // The same for a struct of `size` bytes reflected from `layout_of`.
+  hal::PipelineHandle get(const hal::ShaderInfo& shader, std::size_t size, const hal::ShaderInfo& layout_of);
   hal::Device& device() { return device_; }
 
  private:

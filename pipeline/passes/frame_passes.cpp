@@ -1,4 +1,4 @@
-// The noisy-input passes: uniform structs mirror the shaders' Params blocks (std140).
+// The noisy-input passes: each fills its shader's generated uniform struct.
 #include "passes/frame_passes.hpp"
 
 #include "shaders/accumulate.hpp"
@@ -16,29 +16,21 @@
 namespace asvgf::passes {
 namespace {
 
-struct GbufferParams {
-  render::GpuCamera camera, previous_camera;
-  std::uint32_t width, height, sphere_count, pad;
-};
-struct PathtraceParams {
-  render::GpuCamera camera;
-  std::uint32_t width, height, frame, seed, light_count, sphere_count, max_bounces, spp;
-};
-struct GradientClearParams {
-  std::uint32_t width, height, strata_width, strata_height;
-};
-struct GradientSelectParams {
-  render::GpuCamera camera;
-  std::uint32_t width, height, strata_width, strata_height, frame, pad0, pad1, pad2;
-};
-struct DebugViewParams {
-  std::uint32_t width, height, mode;
-  float depth_scale, alpha, history_cap;
-  std::uint32_t available, pad;
-};
-struct AccumulateParams {
-  std::uint32_t width, height, history_valid, pad;
-};
+// Every variant of a shader has the same uniform block: one generated struct serves them all.
+using GbufferParams = shaders::gbuffer_software_uniforms::Params;
+using PathtraceParams = shaders::pathtrace_software_uniforms::Params;
+using GradientClearParams = shaders::gradient_clear_uniforms::Params;
+using GradientSelectParams = shaders::gradient_select_uniforms::Params;
+using GradientResolveParams = shaders::gradient_resolve_uniforms::Params;
+using AccumulateParams = shaders::accumulate_uniforms::Params;
+using DebugViewParams = shaders::debug_view_uniforms::Params;
+
+// The camera as a shader's generated Camera struct.
+template <typename Camera>
+Camera uniform_camera(const render::GpuCamera& c) {
+  const auto v = [](const glm::vec4& x) { return std::array<float, 4>{x.x, x.y, x.z, x.w}; };
+  return {v(c.position), v(c.forward), v(c.right), v(c.up)};
+}
 
 // The scene buffers `shader` actually binds (the optimiser drops unused ones).
 std::vector<Binding> scene_bindings(const SceneInputs& s, const hal::ShaderInfo& shader) {
@@ -85,13 +77,15 @@ SceneInputs import_scene(graph::RenderGraph& graph, const render::SceneGpu& scen
 void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
                  const GbufferTargets& t, std::uint32_t width, std::uint32_t height) {
   const hal::ShaderInfo& shader = scene.ray_query ? shaders::gbuffer_rayquery : shaders::gbuffer_software;
-  const GbufferParams params{scene.camera, scene.previous_camera, width, height, scene.sphere_count, 0};
+  using Camera = shaders::gbuffer_software_uniforms::Camera;
+  const GbufferParams params{uniform_camera<Camera>(scene.camera), uniform_camera<Camera>(scene.previous_camera), width,
+                             height, scene.sphere_count, 0};
   auto bindings = scene_bindings(scene, shader);
   bindings.insert(bindings.end(), {{"visibility", t.visibility},
                                    {"depth_normal", t.depth_normal},
                                    {"motion", t.motion},
                                    {"albedo", t.albedo}});
-  add_compute_pass(graph, "gbuffer", shader, pipelines.get(shader, sizeof(params)), std::move(bindings), to_bytes(params),
+  add_compute_pass(graph, "gbuffer", shader, pipelines.get<decltype(params)>(shader), std::move(bindings), to_bytes(params),
                    {width, height, 1});
 }
 
@@ -103,7 +97,7 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
   const hal::ShaderInfo& shader =
       scene.ray_query ? (gradient_seeds ? shaders::pathtrace_rayquery_gradients : shaders::pathtrace_rayquery)
                       : (gradient_seeds ? shaders::pathtrace_software_gradients : shaders::pathtrace_software);
-  const PathtraceParams params{scene.camera, width, height, s.frame, s.seed, scene.light_count, scene.sphere_count,
+  const PathtraceParams params{uniform_camera<shaders::pathtrace_software_uniforms::Camera>(scene.camera), width, height, s.frame, s.seed, scene.light_count, scene.sphere_count,
                                s.max_bounces, s.spp};
   auto bindings = scene_bindings(scene, shader);
   bindings.insert(bindings.end(), {{"visibility", visibility},
@@ -111,7 +105,7 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
                                    {"rng_seed", rng_seed},
                                    {"ray_counter", ray_counter}});
   if (gradient_seeds) bindings.push_back({"gradient_seeds", *gradient_seeds});
-  add_compute_pass(graph, name, shader, pipelines.get(shader, sizeof(params)), std::move(bindings), to_bytes(params),
+  add_compute_pass(graph, name, shader, pipelines.get<decltype(params)>(shader), std::move(bindings), to_bytes(params),
                    {width, height, 1});
 }
 
@@ -120,22 +114,25 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
                          std::uint32_t height, const std::string& skip_reason) {
   const std::uint32_t sw = groups_for(width, 3), sh = groups_for(height, 3);
   const GradientClearParams clear{width, height, sw, sh};
-  add_compute_pass(graph, "gradient_clear", shaders::gradient_clear, pipelines.get(shaders::gradient_clear, sizeof(clear)),
+  add_compute_pass(graph, "gradient_clear", shaders::gradient_clear, pipelines.get<GradientClearParams>(shaders::gradient_clear),
                    {{"claims", t.claims},
                     {"gradient_seeds", t.gradient_seeds},
                     {"gradient_prev", t.gradient_prev}},
                    to_bytes(clear), {sw, sh, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
   // Bids, then the winners write: the lowest bid wins whatever order invocations run in.
-  const GradientSelectParams select{scene.camera, width, height, sw, sh, frame, 0, 0, 0};
-  add_compute_pass(graph, "gradient_select", shaders::gradient_select, pipelines.get(shaders::gradient_select, sizeof(select)),
+  const GradientSelectParams select{uniform_camera<shaders::gradient_select_uniforms::Camera>(scene.camera),
+                                    width, height, sw, sh, frame, 0, 0, 0};
+  const GradientResolveParams resolve{uniform_camera<shaders::gradient_resolve_uniforms::Camera>(scene.camera),
+                                      width, height, sw, sh, frame, 0, 0, 0};
+  add_compute_pass(graph, "gradient_select", shaders::gradient_select, pipelines.get<GradientSelectParams>(shaders::gradient_select),
                    {{"triangles", scene.triangles},
                     {"prev_visibility", t.visibility, true},
                     {"depth_normal", t.depth_normal},
                     {"claims", t.claims}},
                    to_bytes(select), {sw, sh, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
-  add_compute_pass(graph, "gradient_resolve", shaders::gradient_resolve, pipelines.get(shaders::gradient_resolve, sizeof(select)),
+  add_compute_pass(graph, "gradient_resolve", shaders::gradient_resolve, pipelines.get<GradientResolveParams>(shaders::gradient_resolve),
                    {{"triangles", scene.triangles},
                     {"prev_visibility", t.visibility, true},
                     {"prev_rng_seed", t.rng_seed, true},
@@ -145,14 +142,14 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
                     // Written only where a sample landed: gradient_clear's values stay elsewhere.
                     {"gradient_seeds", t.gradient_seeds},
                     {"gradient_prev", t.gradient_prev}},
-                   to_bytes(select), {sw, sh, 1})
+                   to_bytes(resolve), {sw, sh, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
 }
 
 void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId illumination,
                     graph::ResourceId accumulation, bool history_valid, std::uint32_t width, std::uint32_t height) {
   const AccumulateParams params{width, height, history_valid ? 1u : 0u, 0};
-  add_compute_pass(graph, "accumulate", shaders::accumulate, pipelines.get(shaders::accumulate, sizeof(params)),
+  add_compute_pass(graph, "accumulate", shaders::accumulate, pipelines.get<AccumulateParams>(shaders::accumulate),
                    {{"illumination", illumination},
                     {"prev_accumulation", accumulation, true},
                     {"accumulation", accumulation}},
@@ -165,7 +162,7 @@ void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const D
   const std::uint32_t available = (in.gradient ? 1u : 0u) | (in.moments ? 2u : 0u) | (in.variance ? 4u : 0u);
   const DebugViewParams params{width, height, static_cast<std::uint32_t>(view), 0.25f, in.denoise.alpha, in.denoise.history_cap,
                                available, 0};
-  add_compute_pass(graph, "debug_view", shaders::debug_view, pipelines.get(shaders::debug_view, sizeof(params)),
+  add_compute_pass(graph, "debug_view", shaders::debug_view, pipelines.get<DebugViewParams>(shaders::debug_view),
                    {{"depth_normal", in.depth_normal},
                     {"motion", in.motion},
                     {"albedo", in.albedo},

@@ -7,10 +7,8 @@
 namespace asvgf::passes {
 namespace {
 
-struct Uniforms {
-  std::uint32_t width, height, gradient_width, gradient_height;
-};
-static_assert(sizeof(Uniforms) == 16);
+// The shader's uniform block, as the shader tool generated it.
+using Uniforms = asvgf::shaders::gradient_uniforms::Params;
 
 }  // namespace
 
@@ -19,11 +17,7 @@ graph::PassBuilder add_gradient(graph::RenderGraph& graph, PipelineCache& pipeli
   const auto& out = graph.resource(r.gradient);
   const Uniforms u{full.width, full.height, out.width, out.height};
   const hal::ShaderInfo& shader = asvgf::shaders::gradient;
-  const auto pipeline = pipelines.get(shader, sizeof(Uniforms),
-                                      {{"width", offsetof(Uniforms, width)},
-                                       {"height", offsetof(Uniforms, height)},
-                                       {"gradient_width", offsetof(Uniforms, gradient_width)},
-                                       {"gradient_height", offsetof(Uniforms, gradient_height)}});
+  const auto pipeline = pipelines.get<Uniforms>(shader);
   return add_compute_pass(
       graph, "gradient", shader, pipeline,
       {{"illumination", r.illumination}, {"gradient_prev", r.gradient_prev}, {"gradient", r.gradient}}, to_bytes(u),

@@ -8,12 +8,8 @@
 namespace asvgf::passes {
 namespace {
 
-struct Uniforms {
-  std::uint32_t width, height, gradient_width, gradient_height;
-  std::int32_t step;
-  float sigma_z, sigma_n;
-};
-static_assert(sizeof(Uniforms) == 28);
+// The shader's uniform block, as the shader tool generated it.
+using Uniforms = asvgf::shaders::gradient_atrous_uniforms::Params;
 
 }  // namespace
 
@@ -23,14 +19,7 @@ graph::PassBuilder add_gradient_atrous(graph::RenderGraph& graph, PipelineCache&
   const auto& out = graph.resource(r.gradient_out);
   const Uniforms u{full.width, full.height, out.width, out.height, 1 << iteration, s.sigma_z, s.sigma_n};
   const hal::ShaderInfo& shader = asvgf::shaders::gradient_atrous;
-  const auto pipeline = pipelines.get(shader, sizeof(Uniforms),
-                                      {{"width", offsetof(Uniforms, width)},
-                                       {"height", offsetof(Uniforms, height)},
-                                       {"gradient_width", offsetof(Uniforms, gradient_width)},
-                                       {"gradient_height", offsetof(Uniforms, gradient_height)},
-                                       {"step", offsetof(Uniforms, step)},
-                                       {"sigma_z", offsetof(Uniforms, sigma_z)},
-                                       {"sigma_n", offsetof(Uniforms, sigma_n)}});
+  const auto pipeline = pipelines.get<Uniforms>(shader);
   return add_compute_pass(
       graph, "gradient_atrous." + std::to_string(iteration + 1), shader, pipeline,
       {{"gradient_in", r.gradient_in}, {"depth_normal", r.depth_normal}, {"gradient_out", r.gradient_out}}, to_bytes(u),

@@ -12,24 +12,8 @@
 namespace asvgf::passes {
 namespace {
 
-struct Uniforms {
-  std::uint32_t width, height, gradient_width, gradient_height;
-  float alpha, moments_alpha, history_cap;
-  std::uint32_t history_valid;
-};
-static_assert(sizeof(Uniforms) == 32);
-
-hal::PipelineHandle pipeline_for(PipelineCache& pipelines, const hal::ShaderInfo& shader) {
-  return pipelines.get(shader, sizeof(Uniforms),
-                       {{"width", offsetof(Uniforms, width)},
-                        {"height", offsetof(Uniforms, height)},
-                        {"gradient_width", offsetof(Uniforms, gradient_width)},
-                        {"gradient_height", offsetof(Uniforms, gradient_height)},
-                        {"alpha", offsetof(Uniforms, alpha)},
-                        {"moments_alpha", offsetof(Uniforms, moments_alpha)},
-                        {"history_cap", offsetof(Uniforms, history_cap)},
-                        {"history_valid", offsetof(Uniforms, history_valid)}});
-}
+// The uniform block as the shader tool generated it (every variant has the same block).
+using Uniforms = asvgf::shaders::temporal_constant_uniforms::Params;
 
 }  // namespace
 
@@ -44,7 +28,7 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
     u.gradient_height = g.height;
   }
   const hal::ShaderInfo* shader = adaptive ? &asvgf::shaders::temporal_adaptive : &asvgf::shaders::temporal_constant;
-  const hal::PipelineHandle pipeline = pipeline_for(pipelines, *shader);
+  const hal::PipelineHandle pipeline = pipelines.get<Uniforms>(*shader);
   std::vector<Binding> bindings{{"illumination", r.illumination},
                                 {"motion", r.motion},
                                 {"depth_normal", r.depth_normal},

@@ -7,11 +7,8 @@
 namespace asvgf::passes {
 namespace {
 
-struct Uniforms {
-  std::uint32_t width, height;
-  float sigma_z, sigma_n, sigma_l, min_history;
-};
-static_assert(sizeof(Uniforms) == 24);
+// The shader's uniform block, as the shader tool generated it.
+using Uniforms = asvgf::shaders::variance_uniforms::Params;
 
 }  // namespace
 
@@ -20,13 +17,7 @@ graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipeli
   const auto& decl = graph.resource(r.color_variance);
   const Uniforms u{decl.width, decl.height, s.sigma_z, s.sigma_n, s.sigma_l, s.min_history};
   const hal::ShaderInfo& shader = asvgf::shaders::variance;
-  const auto pipeline = pipelines.get(shader, sizeof(Uniforms),
-                                      {{"width", offsetof(Uniforms, width)},
-                                       {"height", offsetof(Uniforms, height)},
-                                       {"sigma_z", offsetof(Uniforms, sigma_z)},
-                                       {"sigma_n", offsetof(Uniforms, sigma_n)},
-                                       {"sigma_l", offsetof(Uniforms, sigma_l)},
-                                       {"min_history", offsetof(Uniforms, min_history)}});
+  const auto pipeline = pipelines.get<Uniforms>(shader);
   return add_compute_pass(graph, "variance", shader, pipeline,
                           {{"integrated", r.integrated},
                            {"moments", r.moments},

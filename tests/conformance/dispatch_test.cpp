@@ -8,6 +8,7 @@
 #include "shaders/hal_test_image.hpp"
 #include "shaders/hal_test_ray_query.rayquery.hpp"
 #include "shaders/hal_test_scale.hpp"
+#include "shaders/hal_test_uniforms.hpp"
 
 using namespace conformance;
 using hal::State;
@@ -116,5 +117,38 @@ TEST_CASE("conformance: a ray-query pipeline needs ray queries") {
         CHECK(e.object() == "ray query pipeline");
       }
     }
+  });
+}
+
+TEST_CASE("conformance: the generated uniform struct fills a block with gaps, vectors and nested structs") {
+  for_each_backend([](hal::Device& device) {
+    const hal::ShaderInfo& shader = asvgf::shaders::hal_test_uniforms;
+    using Params = asvgf::shaders::hal_test_uniforms_uniforms::Params;
+    Params p;
+    p.weight = 2.0f;
+    p.tint = {1.0f, 2.0f, 3.0f, 4.0f};
+    p.current = {{10.0f, 20.0f, 30.0f, 40.0f}, {5u, 6u}};
+    p.previous = {{1.0f, 2.0f, 3.0f, 4.0f}, {7u, 8u}};
+    p.axis = {0.5f, 0.25f, 0.125f};
+    p.jitter = {-1.0f, 9.0f};
+    p.offset = {-3, 4, -5};
+    p.count = 3;
+    // What the shader computes, from the GLSL: tint*weight + current.origin - previous.origin +
+    // vec4(axis, jitter.x) + vec4(offset, current.size.x + previous.size.y).
+    const std::array<float, 4> expected = {2 + 10 - 1 + 0.5f - 3, 4 + 20 - 2 + 0.25f + 4, 6 + 30 - 3 + 0.125f - 5,
+                                           8 + 40 - 4 - 1.0f + 13};
+    const auto dst = device.create_buffer({"uniforms dst", 4 * 16, hal::BufferUsage::Storage | hal::BufferUsage::CopySrc});
+    const auto pipeline = device.create_pipeline({"uniforms", &shader});
+    const auto set = device.create_binding_set({"uniforms set", pipeline, {{"dst", dst}}});
+    auto cmd = device.create_command_list("uniforms");
+    cmd->barrier({dst, State::Undefined, State::ShaderWrite});
+    cmd->dispatch({pipeline, set, std::as_bytes(std::span(&p, 1)), 1, 1, 1});
+    cmd->barrier({dst, State::ShaderWrite, State::CopySrc});
+    device.submit(*cmd);
+    device.wait();
+    std::vector<float> out(4 * 4);
+    device.read_buffer(dst, 0, as_writable(out));
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 4; ++c) CHECK_MESSAGE(out[i * 4 + c] == expected[c], "value " << i << "." << c);
   });
 }

@@ -1,11 +1,17 @@
 // add_compute_pass: the shader's reflection decides read/write, and every name is checked against
-// the shader when the pass is declared. Runs without a GPU (nothing is recorded).
+// the shader when the pass is declared; PipelineCache checks the generated uniform struct. Runs without a GPU (nothing is recorded).
 #include <doctest/doctest.h>
 
 #include <string>
 
 #include "hal/error.hpp"
+#include "checked_record.hpp"
 #include "passes/compute_pass.hpp"
+#include "shaders/atrous.history.hpp"
+#include "shaders/atrous.plain.hpp"
+#include "shaders/composite.hpp"
+#include "shaders/gradient.hpp"
+#include "shaders/variance.hpp"
 #include "test_shaders.hpp"
 
 using namespace asvgf;
@@ -71,4 +77,27 @@ TEST_CASE("add_compute_pass rejects bindings that do not match the shader, namin
     CHECK(declare({{"src_image"}, {"dst_image"}}, 12).find("12 bytes of uniforms for the shader's block of 16") !=
           std::string::npos);
   }
+}
+
+TEST_CASE("PipelineCache takes a generated uniform struct for any variant with the same block, and refuses others") {
+  CheckedRecord checked;
+  passes::PipelineCache cache(checked.device);
+  using namespace asvgf::shaders;
+  CHECK_NOTHROW(cache.get<atrous_plain_uniforms::Params>(atrous_history));
+  auto refusal = [&](auto uniforms, const hal::ShaderInfo& shader) -> std::string {
+    try {
+      cache.get<decltype(uniforms)>(shader);
+    } catch (const hal::Error& e) {
+      CHECK(e.kind() == hal::ErrorKind::BindingMismatch);
+      CHECK(e.object() == shader.name);
+      return e.what();
+    }
+    return "";
+  };
+  // Another size: named with both shaders.
+  const std::string size = refusal(composite_uniforms::Params{}, variance);
+  CHECK(size.find("24 bytes in the shader, 16 in the C++ struct generated from 'composite'") != std::string::npos);
+  // The same size, another member at the same place.
+  const std::string member = refusal(composite_uniforms::Params{}, gradient);
+  CHECK(member.find("member 2 is 'gradient_width' in the shader, 'exposure'") != std::string::npos);
 }

@@ -95,6 +95,60 @@ const char* access_name(Access access) {
   return "?";
 }
 
+namespace {
+
+// The C++ mirror of struct type `type_id` (and, first, of the structs it holds) appended to `out`.
+void mirror_struct(const spirv_cross::Compiler& c, std::uint32_t type_id, const std::string& shader,
+                   std::vector<CppStruct>& out) {
+  const auto& type = c.get_type(type_id);
+  CppStruct s{c.get_name(type_id), static_cast<std::uint32_t>(c.get_declared_struct_size(type)), {}};
+  if (s.name.empty()) s.name = "Struct" + std::to_string(type_id);
+  std::uint32_t at = 0;
+  auto pad_to = [&](std::uint32_t offset) {
+    if (offset > at)
+      s.members.push_back({"pad" + std::to_string(at), "std::uint8_t", at, offset - at, true});
+    at = offset;
+  };
+  for (std::uint32_t m = 0; m < type.member_types.size(); ++m) {
+    const std::string name = c.get_member_name(type_id, m);
+    const auto& member = c.get_type(type.member_types[m]);
+    const auto offset = c.type_struct_member_offset(type, m);
+    const auto size = static_cast<std::uint32_t>(c.get_declared_struct_member_size(type, m));
+    auto fail = [&](const std::string& why) {
+      throw ToolError(shader + ": error: uniform member '" + name + "' " + why +
+                      "; the generated C++ struct mirrors scalars, vectors and structs only");
+    };
+    if (!member.array.empty()) fail("is an array");
+    std::string cpp;
+    if (member.basetype == spirv_cross::SPIRType::Struct) {
+      cpp = c.get_name(type.member_types[m]);
+      const bool mirrored =
+          std::any_of(out.begin(), out.end(), [&](const CppStruct& done) { return done.name == cpp; });
+      if (cpp.empty() || !mirrored) {
+        mirror_struct(c, type.member_types[m], shader, out);
+        cpp = out.back().name;
+      }
+    } else {
+      switch (member.basetype) {
+        case spirv_cross::SPIRType::UInt:
+        case spirv_cross::SPIRType::Boolean: cpp = "std::uint32_t"; break;
+        case spirv_cross::SPIRType::Int: cpp = "std::int32_t"; break;
+        case spirv_cross::SPIRType::Float: cpp = "float"; break;
+        default: fail("has a type other than uint, int, bool or float");
+      }
+      if (member.columns > 1) fail("is a matrix");
+      if (member.vecsize > 1) cpp = "std::array<" + cpp + ", " + std::to_string(member.vecsize) + ">";
+    }
+    pad_to(offset);
+    s.members.push_back({name, cpp, offset, size, false});
+    at = offset + size;
+  }
+  pad_to(s.size);
+  out.push_back(std::move(s));
+}
+
+}  // namespace
+
 Reflection reflect(const std::vector<std::uint32_t>& spirv, const std::string& shader) {
   Reflection out;
   try {
@@ -112,6 +166,7 @@ Reflection reflect(const std::vector<std::uint32_t>& spirv, const std::string& s
       for (std::uint32_t m = 0; m < type.member_types.size(); ++m)
         out.uniform_members.push_back({c.get_member_name(r.base_type_id, m), c.type_struct_member_offset(type, m),
                                        static_cast<std::uint32_t>(c.get_declared_struct_member_size(type, m))});
+      mirror_struct(c, r.base_type_id, shader, out.uniform_structs);
     }
     for (const auto& r : res.storage_buffers)
       out.bindings.push_back(make_binding(c, r, Kind::StorageBuffer, access_of(c.get_buffer_block_flags(r.id))));

@@ -30,12 +30,28 @@ struct UniformMember {
   std::uint32_t size = 0;
 };
 
+// A uniform block (or a struct inside one) as a C++ struct: members in offset order with the C++
+// type that has the member's std140 size, and explicit padding where the offsets jump.
+struct CppMember {
+  std::string name;
+  std::string type;  // "std::uint32_t", "std::array<float, 4>", a nested struct's name, "std::uint8_t[N]" padding
+  std::uint32_t offset = 0;
+  std::uint32_t size = 0;
+  bool padding = false;
+};
+struct CppStruct {
+  std::string name;  // the GLSL type name
+  std::uint32_t size = 0;
+  std::vector<CppMember> members;
+};
+
 struct Reflection {
   std::array<std::uint32_t, 3> workgroup_size{1, 1, 1};
   std::vector<Binding> bindings;  // sorted by (set, binding)
   std::uint32_t uniform_block_count = 0;
   std::uint32_t uniform_block_size = 0;
   std::vector<UniformMember> uniform_members;
+  std::vector<CppStruct> uniform_structs;  // nested structs first, the block itself last
   std::vector<std::string> specialization_constants;  // names; the HAL has none, so they are refused
   bool uses_ray_query = false;
   bool uses_image_atomics = false;
