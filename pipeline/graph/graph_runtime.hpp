@@ -4,7 +4,8 @@
 // buffers (shared by transients whose lifetimes do not overlap), two versions of every persistent
 // resource (ping-ponged: frame f writes version f%2 and reads last frame's as its history), and the
 // timer queries. compile() needs the runtime because barriers depend on the states resources were
-// left in by the previous frame.
+// left in by the previous frame. compile.cpp compiles, execute.cpp records a frame, and
+// graph_runtime.cpp keeps the resources, binding sets and timers between frames.
 #pragma once
 
 #include <map>
@@ -13,72 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "graph/compiled_frame.hpp"
 #include "graph/render_graph.hpp"
 
 namespace asvgf::graph {
-
-// Where a graph resource lives in this frame.
-struct Placement {
-  enum class Where : std::uint8_t { Unused, Transient, Persistent, Imported } where = Where::Unused;
-  std::uint32_t slot = 0;  // transient pool slot, or persistent version written this frame
-};
-
-struct GraphBarrier {
-  ResourceId resource = 0;
-  bool history = false;  // the barrier is on last frame's version
-  hal::State before = hal::State::Undefined;
-  hal::State after = hal::State::Undefined;
-  bool discard = false;  // a transient's slot changes hands: wait for the old owner, keep nothing
-  friend bool operator==(const GraphBarrier&, const GraphBarrier&) = default;
-};
-
-struct CompiledPass {
-  std::size_t pass = 0;                       // index into RenderGraph::passes()
-  std::vector<ResourceId> history_clears;     // histories never written: cleared to zero first
-  std::vector<GraphBarrier> barriers;         // recorded before the pass, in this order
-};
-
-struct CulledPass {
-  std::string name;
-  std::string reason;
-};
-
-struct MemoryReport {
-  std::uint64_t transient_without_aliasing = 0;  // bytes if every transient had its own memory
-  std::uint64_t transient_with_aliasing = 0;     // bytes of the pool slots actually used
-  std::uint64_t persistent = 0;                  // both versions of every persistent resource
-};
-
-struct CompiledFrame {
-  const RenderGraph* graph = nullptr;
-  std::uint64_t frame = 0;
-  std::vector<CompiledPass> passes;  // in execution order
-  std::vector<CulledPass> culled;
-  std::vector<GraphBarrier> final_barriers;  // after the last pass: outputs into their final states
-  std::vector<Placement> placement;  // per resource
-  // Per resource: first and last position in `passes` that touches it (transients only).
-  std::vector<std::pair<int, int>> lifetime;
-  MemoryReport memory;
-  // States and written flags of persistent versions after this frame (applied by execute()).
-  struct PersistentEnd {
-    std::string name;
-    std::uint32_t version = 0;
-    hal::State state = hal::State::Undefined;
-    bool written = false;
-    bool pending_write = false, pending_read = false;  // unsynchronised accesses carried into the next frame
-  };
-  std::vector<PersistentEnd> persistent_end;
-  std::vector<std::uint32_t> new_slots;  // pool slots this frame adds (indices into the runtime's pool)
-  struct SlotEnd {
-    std::uint32_t slot = 0;
-    hal::State state = hal::State::Undefined;
-    bool pending = false;
-  };
-  std::vector<SlotEnd> slot_end;  // pool slots this frame used, as it leaves them
-
-  std::string text() const;  // readable dump: order, barriers, culled passes with reasons, memory
-  std::string dot() const;   // Graphviz
-};
 
 struct PassTiming {
   std::string pass;

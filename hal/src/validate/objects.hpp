@@ -36,8 +36,8 @@ struct BindingSetInfo {
 struct AccelInfo {
   std::string label;
   bool top = false;
-  BlasDesc blas;  // bottom level
-  TlasDesc tlas;  // top level
+  BlasDesc blas;       // bottom level
+  TlasDesc tlas;       // top level
   bool built = false;  // a build was recorded (an update needs one)
   std::uint32_t built_instances = 0;
   const std::string& name() const { return label; }

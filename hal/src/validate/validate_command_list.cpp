@@ -42,7 +42,8 @@ class ValidatingCommandList final : public CommandList {
 
   void reset() override {
     if (executing())
-      throw Error(ErrorKind::InvalidUsage, name_, "reset while the device may still execute it; call Device::wait() first");
+      throw Error(ErrorKind::InvalidUsage, name_,
+                  "reset while the device may still execute it; call Device::wait() first");
     inner_->reset();
     submitted_ = false;
     label_depth_ = 0;
@@ -99,15 +100,15 @@ class ValidatingCommandList final : public CommandList {
                     "leaves binding '" + std::string(binding.name) + "' of shader '" + shader_name +
                         "' unbound (dispatch in '" + name_ + "')");
       if (!alive(r))
-        throw Error(ErrorKind::InvalidHandle, set.name(),
-                    "binding '" + std::string(binding.name) + "' names a destroyed resource (dispatch in '" + name_ +
-                        "')");
+        throw Error(
+            ErrorKind::InvalidHandle, set.name(),
+            "binding '" + std::string(binding.name) + "' names a destroyed resource (dispatch in '" + name_ + "')");
     }
     if (desc.uniforms.size() != shader.uniform_block_size)
       throw Error(ErrorKind::InvalidUsage, pipeline.name(),
                   "dispatch passes " + std::to_string(desc.uniforms.size()) + " bytes of uniforms; shader '" +
-                      shader_name + "' has a block of " + std::to_string(shader.uniform_block_size) +
-                      " (in '" + name_ + "')");
+                      shader_name + "' has a block of " + std::to_string(shader.uniform_block_size) + " (in '" + name_ +
+                      "')");
     if (desc.groups_x == 0 || desc.groups_y == 0 || desc.groups_z == 0)
       throw Error(ErrorKind::InvalidUsage, pipeline.name(),
                   "dispatch of " + std::to_string(desc.groups_x) + "x" + std::to_string(desc.groups_y) + "x" +
@@ -164,7 +165,8 @@ class ValidatingCommandList final : public CommandList {
   void build_blas(AccelHandle handle, bool update) override {
     recording();
     AccelInfo& a = objects_.accels.get(handle.id);
-    if (a.top) throw Error(ErrorKind::InvalidUsage, a.name(), "build_blas on a top-level structure (in '" + name_ + "')");
+    if (a.top)
+      throw Error(ErrorKind::InvalidUsage, a.name(), "build_blas on a top-level structure (in '" + name_ + "')");
     if (update && !a.blas.allow_update)
       throw Error(ErrorKind::InvalidUsage, a.name(), "update requested but the BLAS was created without allow_update");
     if (update && !a.built)
@@ -176,11 +178,12 @@ class ValidatingCommandList final : public CommandList {
   void build_tlas(AccelHandle handle, std::span<const TlasInstance> list, bool update) override {
     recording();
     AccelInfo& t = objects_.accels.get(handle.id);
-    if (!t.top) throw Error(ErrorKind::InvalidUsage, t.name(), "build_tlas on a bottom-level structure (in '" + name_ + "')");
+    if (!t.top)
+      throw Error(ErrorKind::InvalidUsage, t.name(), "build_tlas on a bottom-level structure (in '" + name_ + "')");
     if (list.size() > t.tlas.max_instances)
-      throw Error(ErrorKind::InvalidUsage, t.name(),
-                  std::to_string(list.size()) + " instances exceed max_instances " +
-                      std::to_string(t.tlas.max_instances));
+      throw Error(
+          ErrorKind::InvalidUsage, t.name(),
+          std::to_string(list.size()) + " instances exceed max_instances " + std::to_string(t.tlas.max_instances));
     if (update && (!t.tlas.allow_update || !t.built))
       throw Error(ErrorKind::InvalidUsage, t.name(), "update needs allow_update and an earlier recorded build");
     if (update && list.size() != t.built_instances)
@@ -214,13 +217,17 @@ class ValidatingCommandList final : public CommandList {
  private:
   bool executing() const { return submitted_ && serial_ > objects_.completed; }
   void recording() const {
-    if (submitted_) throw Error(ErrorKind::InvalidUsage, name_, "recorded into after it was submitted; call reset() first");
+    if (submitted_)
+      throw Error(ErrorKind::InvalidUsage, name_, "recorded into after it was submitted; call reset() first");
   }
   bool alive(Resource r) const {
     switch (r.kind) {
-      case ResourceKind::Buffer: return objects_.buffers.alive(r.id);
-      case ResourceKind::Image: return objects_.images.alive(r.id);
-      case ResourceKind::Accel: return objects_.accels.alive(r.id);
+      case ResourceKind::Buffer:
+        return objects_.buffers.alive(r.id);
+      case ResourceKind::Image:
+        return objects_.images.alive(r.id);
+      case ResourceKind::Accel:
+        return objects_.accels.alive(r.id);
     }
     return false;
   }
@@ -248,9 +255,9 @@ class ValidatingCommandList final : public CommandList {
     recording();
     const TimerInfo& t = objects_.timers.get(timers.id);
     if (region >= t.desc.regions)
-      throw Error(ErrorKind::InvalidUsage, t.name(),
-                  "region " + std::to_string(region) + " out of " + std::to_string(t.desc.regions) + " (in '" + name_ +
-                      "')");
+      throw Error(
+          ErrorKind::InvalidUsage, t.name(),
+          "region " + std::to_string(region) + " out of " + std::to_string(t.desc.regions) + " (in '" + name_ + "')");
   }
 
   Objects& objects_;

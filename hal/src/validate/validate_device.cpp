@@ -18,9 +18,12 @@ std::string describe(const ShaderBinding& b) {
 
 const char* resource_kind(ResourceKind kind) {
   switch (kind) {
-    case ResourceKind::Buffer: return "buffer";
-    case ResourceKind::Image: return "image";
-    case ResourceKind::Accel: return "acceleration structure";
+    case ResourceKind::Buffer:
+      return "buffer";
+    case ResourceKind::Image:
+      return "image";
+    case ResourceKind::Accel:
+      return "acceleration structure";
   }
   return "resource";
 }
@@ -133,7 +136,8 @@ class ValidatingDevice final : public Device {
         throw Error(ErrorKind::InvalidUsage, b.name(), "input of BLAS '" + desc.name + "' needs AccelBuildInput usage");
     };
     if (desc.geometry == BlasGeometry::Boxes) {
-      if (desc.box_count == 0) throw Error(ErrorKind::InvalidDescriptor, desc.name, "BLAS of boxes needs at least one box");
+      if (desc.box_count == 0)
+        throw Error(ErrorKind::InvalidDescriptor, desc.name, "BLAS of boxes needs at least one box");
       input(desc.boxes, std::uint64_t{desc.box_count} * 24, "box", desc.box_count);
     } else {
       if (desc.vertex_count == 0 || desc.triangle_count == 0)
@@ -241,8 +245,9 @@ class ValidatingDevice final : public Device {
         const std::uint64_t range = capabilities().max_storage_buffer_range;
         if (range && b.desc.size > range)
           throw Error(ErrorKind::InvalidUsage, b.name(),
-                      "is " + std::to_string(b.desc.size) + " bytes, larger than the device's largest storage binding (" +
-                          std::to_string(range) + " bytes)");
+                      "is " + std::to_string(b.desc.size) +
+                          " bytes, larger than the device's largest storage binding (" + std::to_string(range) +
+                          " bytes)");
         return;
       }
       case ResourceKind::Image: {
@@ -281,8 +286,7 @@ class ValidatingDevice final : public Device {
                   std::string(what) + " of " + std::to_string(size) + " bytes at offset " + std::to_string(offset) +
                       " runs past the end of the " + std::to_string(b.desc.size) + "-byte buffer");
   }
-  static void check_whole(const ImageInfo& i, ImageUsage usage, const char* call, const char* got,
-                          std::uint64_t size) {
+  static void check_whole(const ImageInfo& i, ImageUsage usage, const char* call, const char* got, std::uint64_t size) {
     if (!has(i.desc.usage, usage))
       throw Error(ErrorKind::InvalidUsage, i.name(),
                   std::string(call) + " needs an image created with " +
@@ -301,20 +305,27 @@ class ValidatingDevice final : public Device {
 
 const std::string& Objects::resource_name(Resource r) {
   switch (r.kind) {
-    case ResourceKind::Buffer: return buffers.get(r.id).name();
-    case ResourceKind::Image: return images.get(r.id).name();
-    case ResourceKind::Accel: return accels.get(r.id).name();
+    case ResourceKind::Buffer:
+      return buffers.get(r.id).name();
+    case ResourceKind::Image:
+      return images.get(r.id).name();
+    case ResourceKind::Accel:
+      return accels.get(r.id).name();
   }
   throw Error(ErrorKind::InvalidHandle, "resource", "unknown resource kind");
 }
 
 bool binding_accepts(BindingKind kind, ResourceKind resource) {
   switch (kind) {
-    case BindingKind::StorageBuffer: return resource == ResourceKind::Buffer;
+    case BindingKind::StorageBuffer:
+      return resource == ResourceKind::Buffer;
     case BindingKind::SampledImage:
-    case BindingKind::StorageImage: return resource == ResourceKind::Image;
-    case BindingKind::AccelerationStructure: return resource == ResourceKind::Accel;
-    case BindingKind::UniformBuffer: return false;  // bound implicitly from DispatchDesc::uniforms
+    case BindingKind::StorageImage:
+      return resource == ResourceKind::Image;
+    case BindingKind::AccelerationStructure:
+      return resource == ResourceKind::Accel;
+    case BindingKind::UniformBuffer:
+      return false;  // bound implicitly from DispatchDesc::uniforms
   }
   return false;
 }

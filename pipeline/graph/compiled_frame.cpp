@@ -1,7 +1,7 @@
 // Printing a compiled frame: text for people, Graphviz for pictures.
 #include <sstream>
 
-#include "graph/graph_runtime.hpp"
+#include "graph/compiled_frame.hpp"
 
 namespace asvgf::graph {
 namespace {

@@ -1,0 +1,121 @@
+// The runtime between frames: the pooled transients and both versions of each persistent resource
+// (created when a compiled frame first needs them), the binding-set cache, the timers.
+#include <algorithm>
+
+#include "graph/graph_runtime.hpp"
+
+namespace asvgf::graph {
+namespace {
+
+constexpr auto kImageUsage =
+    hal::ImageUsage::Sampled | hal::ImageUsage::Storage | hal::ImageUsage::CopySrc | hal::ImageUsage::CopyDst;
+constexpr auto kBufferUsage = hal::BufferUsage::Storage | hal::BufferUsage::CopySrc | hal::BufferUsage::CopyDst;
+
+hal::Resource create(hal::Device& device, const std::string& name, hal::ResourceKind kind, std::uint32_t width,
+                     std::uint32_t height, hal::Format format, std::uint64_t size) {
+  if (kind == hal::ResourceKind::Buffer) return device.create_buffer({name, size, kBufferUsage});
+  return device.create_image({name, width, height, format, kImageUsage});
+}
+
+void destroy(hal::Device& device, hal::Resource r) {
+  if (!r.id) return;
+  if (r.kind == hal::ResourceKind::Buffer) device.destroy(hal::BufferHandle{r.id});
+  if (r.kind == hal::ResourceKind::Image) device.destroy(hal::ImageHandle{r.id});
+}
+
+}  // namespace
+
+GraphRuntime::GraphRuntime(hal::Device& device) : device_(device) {}
+
+GraphRuntime::~GraphRuntime() {
+  try {
+    device_.wait();
+    for (auto& [key, set] : binding_sets_) device_.destroy(set);
+    for (auto& s : slots_) destroy(device_, s.handle);
+    for (auto& [name, p] : persistent_) destroy(device_, p.versions[0]), destroy(device_, p.versions[1]);
+    if (timers_) device_.destroy(timers_);
+  } catch (...) {
+    // Destruction must not throw; a lost device has nothing left to release.
+  }
+}
+
+void GraphRuntime::ensure_resources(const CompiledFrame& frame) {
+  const auto& res = frame.graph->resources();
+  for (std::uint32_t s : frame.new_slots) {
+    if (s < slots_.size()) continue;
+    slots_.resize(s + 1);
+  }
+  for (ResourceId r = 0; r < res.size(); ++r) {
+    const Placement& p = frame.placement[r];
+    const ResourceDecl& d = res[r];
+    if (p.where == Placement::Where::Transient) {
+      Slot& slot = slots_[p.slot];
+      if (!slot.handle.id) {
+        slot = {d.kind, d.width, d.height, d.format, d.size, {}, hal::State::Undefined, false};
+        slot.handle = create(device_, "transient." + std::to_string(p.slot) + " (" + d.name + ")", d.kind, d.width,
+                             d.height, d.format, d.size);
+      }
+    } else if (p.where == Placement::Where::Persistent) {
+      auto it = persistent_.find(d.name);
+      if (it != persistent_.end() &&
+          !same_shape(Slot{d.kind, d.width, d.height, d.format, d.size, {}}, it->second.decl)) {
+        // A resize: the old versions are useless (compile() already treated them as new).
+        destroy(device_, it->second.versions[0]);
+        destroy(device_, it->second.versions[1]);
+        persistent_.erase(it);
+        it = persistent_.end();
+      }
+      if (it == persistent_.end()) {
+        Persistent fresh;
+        fresh.decl = d;
+        for (int v = 0; v < 2; ++v)
+          fresh.versions[v] =
+              create(device_, d.name + "[" + std::to_string(v) + "]", d.kind, d.width, d.height, d.format, d.size);
+        persistent_.emplace(d.name, fresh);
+      }
+    }
+  }
+}
+
+hal::Resource GraphRuntime::physical(const CompiledFrame& frame, ResourceId id, bool history) {
+  const ResourceDecl& d = frame.graph->resource(id);
+  const Placement& p = frame.placement.at(id);
+  switch (p.where) {
+    case Placement::Where::Transient:
+      return slots_.at(p.slot).handle;
+    case Placement::Where::Persistent:
+      return persistent_.at(d.name).versions[history ? 1 - p.slot : p.slot];
+    case Placement::Where::Imported:
+      return d.imported;
+    case Placement::Where::Unused:
+      break;
+  }
+  throw GraphError("resource '" + d.name + "' is used by a pass but was not declared in that pass");
+}
+
+std::vector<PassTiming> GraphRuntime::timings() {
+  std::vector<PassTiming> out;
+  if (!timers_) return out;
+  const auto ms = device_.read_timers(timers_);
+  for (std::size_t i = 0; i < timed_passes_.size(); ++i)
+    out.push_back({timed_passes_[i], i < ms.size() ? ms[i] : std::nullopt});
+  return out;
+}
+
+void GraphRuntime::reset_histories() {
+  for (auto& [name, p] : persistent_) p.written[0] = p.written[1] = false;
+}
+
+hal::BindingSetHandle GraphRuntime::binding_set(hal::PipelineHandle pipeline,
+                                                const std::vector<hal::BindingSetDesc::Entry>& entries) {
+  std::string key = std::to_string(pipeline.id);
+  for (const auto& e : entries)
+    key += "|" + e.name + "=" + std::to_string(int(e.resource.kind)) + ":" + std::to_string(e.resource.id);
+  auto it = binding_sets_.find(key);
+  if (it != binding_sets_.end()) return it->second;
+  const auto set = device_.create_binding_set({"bindings " + key, pipeline, entries});
+  binding_sets_.emplace(key, set);
+  return set;
+}
+
+}  // namespace asvgf::graph
