@@ -219,6 +219,7 @@ CompiledFrame GraphRuntime::compile(const RenderGraph& graph) {
   out.graph = &graph;
   out.frame = frame_;
   out.placement.resize(res.size());
+  out.history_valid.assign(res.size(), false);
   out.lifetime.assign(res.size(), {-1, -1});
 
   Analysis a{graph, passes, res, passes.size(), {}, {}, {}, {}, {}, {}};
@@ -289,6 +290,7 @@ void GraphRuntime::derive_barriers(CompiledFrame& out, const std::vector<std::si
     bool owned = false;
   };
   std::map<TrackKey, Track> tracks;
+  std::vector<bool> cleared(res.size(), false);  // histories cleared this frame: they hold zeros
   auto key = [&](ResourceId r, bool history) -> TrackKey {
     const Placement& p = out.placement[r];
     switch (p.where) {
@@ -343,7 +345,9 @@ void GraphRuntime::derive_barriers(CompiledFrame& out, const std::vector<std::si
       if (m.history && !t.written) {
         cp.history_clears.push_back(m.resource);
         t = Track{hal::State::CopyDst, true, true, false, false, 0, false};
+        cleared[m.resource] = true;
       }
+      if (m.history) out.history_valid[m.resource] = !cleared[m.resource];
       const bool hazard = t.pending_write || (m.write && t.pending_read);
       if (t.fresh || t.state != m.needs || hazard) {
         // Taking over a slot: from Undefined when nothing used it, else wait for the old owner and

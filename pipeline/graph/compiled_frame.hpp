@@ -52,6 +52,9 @@ struct CompiledFrame {
   std::vector<CulledPass> culled;
   std::vector<GraphBarrier> final_barriers;  // after the last pass: outputs into their final states
   std::vector<Placement> placement;          // per resource
+  // Per resource: last frame's version holds data this frame's passes may read (it was written
+  // and not cleared here). False for resources no pass reads as a history.
+  std::vector<bool> history_valid;
   // Per resource: first and last position in `passes` that touches it (transients only).
   std::vector<std::pair<int, int>> lifetime;
   MemoryReport memory;

@@ -5,6 +5,7 @@
 #include "graph/graph_runtime.hpp"
 
 namespace asvgf::graph {
+
 void GraphRuntime::execute(const CompiledFrame& frame, hal::CommandList& commands) {
   if (frame.frame != frame_)
     throw GraphError("compiled frame " + std::to_string(frame.frame) + " executed at frame " + std::to_string(frame_));
@@ -77,13 +78,7 @@ hal::Resource PassContext::history(ResourceId id) const {
   return runtime_.physical(compiled_, id, true);
 }
 bool PassContext::history_valid(ResourceId id) const {
-  const auto& d = compiled_.graph->resource(id);
-  auto it = runtime_.persistent_.find(d.name);
-  if (it == runtime_.persistent_.end()) return false;
-  for (const auto& cp : compiled_.passes)
-    for (ResourceId r : cp.history_clears)
-      if (r == id) return false;
-  return it->second.written[1 - compiled_.placement.at(id).slot];
+  return compiled_.history_valid.at(id);
 }
 
 void PassContext::dispatch(hal::PipelineHandle pipeline, const std::vector<hal::BindingSetDesc::Entry>& entries,

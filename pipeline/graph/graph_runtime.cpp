@@ -75,22 +75,29 @@ void GraphRuntime::ensure_resources(const CompiledFrame& frame) {
       }
     }
   }
+  // Each resource's HAL objects this frame, by id, so that passes need no lookups by name.
+  resolved_.assign(res.size(), {});
+  for (ResourceId r = 0; r < res.size(); ++r) {
+    const Placement& p = frame.placement[r];
+    switch (p.where) {
+      case Placement::Where::Transient: resolved_[r][0] = slots_.at(p.slot).handle; break;
+      case Placement::Where::Persistent: {
+        const Persistent& versions = persistent_.at(res[r].name);
+        resolved_[r] = {versions.versions[p.slot], versions.versions[1 - p.slot]};
+        break;
+      }
+      case Placement::Where::Imported: resolved_[r][0] = res[r].imported; break;
+      case Placement::Where::Unused: break;
+    }
+  }
 }
 
-hal::Resource GraphRuntime::physical(const CompiledFrame& frame, ResourceId id, bool history) {
-  const ResourceDecl& d = frame.graph->resource(id);
-  const Placement& p = frame.placement.at(id);
-  switch (p.where) {
-    case Placement::Where::Transient:
-      return slots_.at(p.slot).handle;
-    case Placement::Where::Persistent:
-      return persistent_.at(d.name).versions[history ? 1 - p.slot : p.slot];
-    case Placement::Where::Imported:
-      return d.imported;
-    case Placement::Where::Unused:
-      break;
-  }
-  throw GraphError("resource '" + d.name + "' is used by a pass but was not declared in that pass");
+hal::Resource GraphRuntime::physical(const CompiledFrame& frame, ResourceId id, bool history) const {
+  const hal::Resource r = id < resolved_.size() ? resolved_[id][history ? 1 : 0] : hal::Resource{};
+  if (!r.id)
+    throw GraphError("resource '" + frame.graph->resource(id).name +
+                     "' is used by a pass but was not declared in that pass");
+  return r;
 }
 
 std::vector<PassTiming> GraphRuntime::timings() {

@@ -8,6 +8,7 @@
 // graph_runtime.cpp keeps the resources, binding sets and timers between frames.
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <span>
@@ -99,7 +100,8 @@ class GraphRuntime {
              const std::vector<std::vector<PassAccess>>& accesses);
   void derive_barriers(CompiledFrame& out, const std::vector<std::size_t>& order,
                        const std::vector<std::vector<PassAccess>>& accesses);
-  hal::Resource physical(const CompiledFrame& frame, ResourceId id, bool history);
+  hal::Resource physical(const CompiledFrame& frame, ResourceId id, bool history) const;
+  // Creates what `frame` needs that does not exist yet, then resolves every resource's HAL objects.
   void ensure_resources(const CompiledFrame& frame);
   hal::BindingSetHandle binding_set(hal::PipelineHandle pipeline, const std::vector<hal::BindingSetDesc::Entry>& e);
 
@@ -107,7 +109,8 @@ class GraphRuntime {
   bool binding_checks_ = true;
   std::uint64_t frame_ = 0;
   std::vector<Slot> slots_;
-  std::map<std::string, Persistent> persistent_;
+  std::map<std::string, Persistent> persistent_;  // by name: graphs are rebuilt every frame
+  std::vector<std::array<hal::Resource, 2>> resolved_;  // per resource of the frame executing: now, history
   std::map<std::string, hal::BindingSetHandle> binding_sets_;
   hal::TimerQueriesHandle timers_;
   std::uint32_t timer_regions_ = 0;

@@ -283,13 +283,14 @@ TEST_CASE("on a small known graph the derived barriers are exactly the expected 
   CHECK_MESSAGE(checked.record.reports().empty(), messages(checked.record));
 }
 
-TEST_CASE("history ping-pong: a pass reads last frame's version, cleared on the first frame") {
+TEST_CASE("history ping-pong: a pass reads last frame's version, cleared on the first frame and after a reset") {
   CheckedRecord checked;
   hal::Device& device = checked.device;
   graph::GraphRuntime runtime(device);
-  hal::Resource written[3], read[3];
-  bool valid[3];
-  for (int f = 0; f < 3; ++f) {
+  hal::Resource written[4], read[4];
+  bool valid[4];
+  for (int f = 0; f < 4; ++f) {
+    if (f == 3) runtime.reset_histories();  // a camera cut
     graph::RenderGraph g;
     const auto h = g.add_image("accum", 4, 4, hal::Format::RGBA32F, Lifetime::Persistent);
     g.add_pass("accumulate").read_history(h).write(h).execute([&, h, f](graph::PassContext& ctx) {
@@ -306,6 +307,7 @@ TEST_CASE("history ping-pong: a pass reads last frame's version, cleared on the 
   CHECK_FALSE(valid[0]);
   CHECK(valid[1]);
   CHECK(valid[2]);
+  CHECK_FALSE(valid[3]);
   CHECK(read[1] == written[0]);
   CHECK(read[2] == written[1]);
   CHECK_FALSE(written[0] == written[1]);
