@@ -47,7 +47,6 @@ std::string_view to_string(State state) {
     case State::AccelBuildInput: return "accel-build-input";
     case State::AccelWrite: return "accel-write";
     case State::AccelRead: return "accel-read";
-    case State::HostRead: return "host-read";
     case State::Present: return "present";
   }
   return "?";

@@ -84,7 +84,6 @@ enum class State : std::uint8_t {
   AccelBuildInput,  // vertex/index buffers read by an acceleration-structure build
   AccelWrite,       // acceleration structure being built
   AccelRead,        // acceleration structure traced against (or used as a TLAS build input)
-  HostRead,         // mapped for host reads after GPU writes
   Present,          // handed to the presentation engine
 };
 std::string_view to_string(State state);
