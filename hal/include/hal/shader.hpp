@@ -34,6 +34,9 @@ struct ShaderBinding {
   Access access = Access::Read;
   std::string_view name;            // the GLSL instance or variable name, used to bind from C++
   Format format = Format::Undefined;  // storage images only
+  // OpenGL unit of this binding's kind (uniform block, SSBO, texture or image unit): GL has no
+  // sets, so the shader tool numbers each kind in (set, binding) order and writes the GLSL so.
+  std::uint32_t gl_binding = 0;
 };
 
 struct UniformMember {
@@ -51,6 +54,9 @@ struct ShaderInfo {
   std::uint32_t uniform_block_size = 0;  // 0: the shader has no uniform block
   std::span<const UniformMember> uniform_members;
   bool uses_ray_query = false;
+  // OpenGL GLSL 450 and ES GLSL 310 source with the gl_binding units; empty for ray-query variants.
+  std::string_view glsl;
+  std::string_view essl;
 
   // The binding with this name, or nullptr.
   constexpr const ShaderBinding* find(std::string_view binding_name) const {

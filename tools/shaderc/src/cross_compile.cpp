@@ -6,13 +6,25 @@
 
 namespace shaderc {
 
-std::string to_glsl(const std::vector<std::uint32_t>& spirv, bool es) {
+std::string to_glsl(const std::vector<std::uint32_t>& spirv, const Reflection& reflection, bool es) {
   spirv_cross::CompilerGLSL compiler(spirv);
   auto options = compiler.get_common_options();
   options.version = es ? 310 : 450;
   options.es = es;
   options.vulkan_semantics = false;
   compiler.set_common_options(options);
+
+  // Sets collide in GL (SPIRV-Cross keeps `binding` and drops `set`): give each resource its unit.
+  const auto resources = compiler.get_shader_resources();
+  for (const auto* list : {&resources.uniform_buffers, &resources.storage_buffers, &resources.separate_images,
+                           &resources.storage_images})
+    for (const auto& r : *list) {
+      const auto set = compiler.get_decoration(r.id, spv::DecorationDescriptorSet);
+      const auto binding = compiler.get_decoration(r.id, spv::DecorationBinding);
+      for (const auto& b : reflection.bindings)
+        if (b.set == set && b.binding == binding) compiler.set_decoration(r.id, spv::DecorationBinding, b.gl_binding);
+      compiler.unset_decoration(r.id, spv::DecorationDescriptorSet);
+    }
 
   // texelFetch needs no sampler, but GL only has combined samplers: pair each image with a dummy
   // one and give the pair the image's name and binding.

@@ -18,7 +18,9 @@ struct Targets {
 };
 
 // `namespace asvgf::shaders { inline constexpr hal::ShaderInfo <cpp_name> = {...}; }`
-std::string header_text(const Options& options, const Reflection& reflection, const std::vector<std::uint32_t>& spirv);
+// `glsl` and `essl` (the OpenGL outputs, empty when not emitted) are embedded as source text.
+std::string header_text(const Options& options, const Reflection& reflection, const std::vector<std::uint32_t>& spirv,
+                        const std::string& glsl, const std::string& essl);
 
 // Stable (sorted keys, no paths, no SPIR-V) so that golden files can compare it byte for byte.
 std::string json_text(const Options& options, const Reflection& reflection, const Targets& targets);

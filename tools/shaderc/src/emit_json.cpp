@@ -12,7 +12,8 @@ std::string json_text(const Options& o, const Reflection& r, const Targets& targ
               {"binding", b.binding},
               {"kind", kind_name(b.kind)},
               {"access", access_name(b.access)},
-              {"name", b.name}};
+              {"name", b.name},
+              {"gl_binding", b.gl_binding}};
     if (!b.format.empty()) j["format"] = b.format;
     bindings.push_back(std::move(j));
   }

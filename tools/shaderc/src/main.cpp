@@ -75,13 +75,14 @@ int run(const Options& o) {
   targets.emitted["spv"] = o.output("spv").filename().string();
 
   const bool rq = reflection.uses_ray_query;
+  std::string glsl_text, essl_text;  // embedded in the header for the OpenGL backend
   if (rq) {
     skip(o, targets, "glsl", "ray queries need Vulkan GLSL; OpenGL has no acceleration structures");
     skip(o, targets, "essl", "ray queries need Vulkan GLSL; OpenGL ES has no acceleration structures");
     skip(o, targets, "wgsl", "WebGPU and naga have no ray queries");
   } else {
-    cross_target(o, rq, "glsl", "GLSL 450", targets, [&] { return to_glsl(spirv, false); });
-    cross_target(o, rq, "essl", "ESSL 310", targets, [&] { return to_glsl(spirv, true); });
+    cross_target(o, rq, "glsl", "GLSL 450", targets, [&] { return glsl_text = to_glsl(spirv, reflection, false); });
+    cross_target(o, rq, "essl", "ESSL 310", targets, [&] { return essl_text = to_glsl(spirv, reflection, true); });
   }
   cross_target(o, rq, "hlsl", rq ? "HLSL SM 6.5" : "HLSL SM 6.0", targets, [&] { return to_hlsl(spirv, rq); });
   cross_target(o, rq, "msl", rq ? "MSL 2.3" : "MSL 2.1", targets, [&] { return to_msl(spirv, rq); });
@@ -92,7 +93,7 @@ int run(const Options& o) {
 
   write_if_changed(o.output("json"), json_text(o, reflection, targets));
   const fs::path header = o.header_dir / (o.full_name() + ".hpp");
-  write_if_changed(header, header_text(o, reflection, spirv));
+  write_if_changed(header, header_text(o, reflection, spirv, glsl_text, essl_text));
 
   if (!o.depfile.empty()) {
     std::string dep = depfile_escape(fs::absolute(header)) + ":";

@@ -198,6 +198,8 @@ Reflection reflect(const std::vector<std::uint32_t>& spirv, const std::string& s
     std::sort(out.bindings.begin(), out.bindings.end(), [](const Binding& a, const Binding& b) {
       return std::pair(a.set, a.binding) < std::pair(b.set, b.binding);
     });
+    std::uint32_t next_unit[5] = {};  // per Kind
+    for (auto& b : out.bindings) b.gl_binding = next_unit[static_cast<int>(b.kind)]++;
 
     for (const auto& sc : c.get_specialization_constants())
       out.specialization_constants.push_back(c.get_name(sc.id));

@@ -22,6 +22,9 @@ struct Binding {
   std::string name;        // GLSL instance name of a block, or the variable name
   std::string format;      // storage images: GLSL format qualifier ("rgba16f"), else empty
   std::string hal_format;  // storage images: hal::Format enumerator ("RGBA16F"), else "Undefined"
+  // OpenGL has one binding namespace per kind and no sets: the unit of this kind (uniform block,
+  // SSBO, texture, image) in (set, binding) order. The GLSL/ESSL outputs are written with it.
+  std::uint32_t gl_binding = 0;
 };
 
 struct UniformMember {
