@@ -15,6 +15,7 @@ fi
 packages=(
   build-essential cmake ninja-build pkg-config git clang-format
   libvulkan-dev vulkan-tools vulkan-validationlayers
+  libepoxy-dev libegl-dev
   glslang-tools glslang-dev spirv-tools spirv-cross libspirv-cross-c-shared-dev spirv-headers
   libglfw3-dev libglm-dev doctest-dev libstb-dev libtinyobjloader-dev libtinygltf-dev
   libtinyexr-dev nlohmann-json3-dev libcli11-dev
@@ -42,9 +43,12 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
 done
-mesa_version="$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || true)"
-need_mesa=1
-case "$mesa_version" in *bpo*) need_mesa=0 ;; esac
+# Mesa's Vulkan (lavapipe) and its GL/EGL drivers (llvmpipe, surfaceless EGL), all from backports.
+mesa_packages=(mesa-vulkan-drivers libgl1-mesa-dri libegl-mesa0)
+need_mesa=0
+for p in "${mesa_packages[@]}"; do
+  case "$(dpkg-query -W -f='${Version}' "$p" 2>/dev/null || true)" in *bpo*) ;; *) need_mesa=1 ;; esac
+done
 
 if [ ${#missing[@]} -gt 0 ] || [ $need_mesa -eq 1 ]; then
   if [ $need_update -eq 1 ] || [ ! -d /var/lib/apt/lists ] || [ -z "$(ls /var/lib/apt/lists/*backports* 2>/dev/null)" ]; then
@@ -55,8 +59,8 @@ if [ ${#missing[@]} -gt 0 ] || [ $need_mesa -eq 1 ]; then
     apt-get install -y -q --no-install-recommends "${missing[@]}"
   fi
   if [ $need_mesa -eq 1 ]; then
-    echo "bootstrap: installing mesa-vulkan-drivers from bookworm-backports"
-    apt-get install -y -q --no-install-recommends -t bookworm-backports mesa-vulkan-drivers
+    echo "bootstrap: installing ${mesa_packages[*]} from bookworm-backports"
+    apt-get install -y -q --no-install-recommends -t bookworm-backports "${mesa_packages[@]}"
   fi
 else
   echo "bootstrap: Debian packages already installed"
