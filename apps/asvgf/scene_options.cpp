@@ -1,14 +1,26 @@
 #include "scene_options.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "hal/validate.hpp"
+#include "hal_gl/gl.hpp"
 #include "hal_vulkan/vulkan.hpp"
 #include "scene/builtin.hpp"
 #include "scene/scene_file.hpp"
 
 namespace asvgf::cli {
+
+std::string chosen_backend(const std::string& option) {
+  if (!option.empty()) return option;
+  const char* env = std::getenv("ASVGF_BACKEND");
+  if (!env || !*env) return "vulkan";
+  const std::string value = env;
+  if (value != "vulkan" && value != "gl" && value != "gles")
+    throw CLI::ValidationError("ASVGF_BACKEND", "'" + value + "' is not one of vulkan, gl, gles");
+  return value;
+}
 
 void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--scene", o.scene, "Built-in scene ('cornell') or a scene file (.json)")->capture_default_str();
@@ -19,6 +31,8 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
       ->check(CLI::IsMember({"raw", "ema", "svgf", "asvgf", "reference"}))
       ->capture_default_str();
   cmd.add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  cmd.add_option("--backend", o.backend, "HAL backend: vulkan, gl (OpenGL 4.5) or gles (OpenGL ES 3.1) (default: $ASVGF_BACKEND, else vulkan)")
+      ->check(CLI::IsMember({"vulkan", "gl", "gles"}));
   cmd.add_option("--device", o.device, "Vulkan adapter: index or part of its name (default: $ASVGF_DEVICE, else best)");
   cmd.add_flag("--software-bvh", o.software_bvh, "Trace with the software BVH even where ray queries exist");
   cmd.add_flag("--validation", o.validation, "Enable the Vulkan validation layer (synchronization validation on)");
@@ -82,6 +96,12 @@ render::RenderSettings render_settings(const SceneOptions& o) {
 }
 
 std::unique_ptr<hal::Device> open_device(const SceneOptions& o) {
+  const std::string backend = chosen_backend(o.backend);
+  if (backend == "gl" || backend == "gles") {
+    hal::gl::DeviceOptions options;
+    options.flavour = backend == "gl" ? hal::gl::Flavour::Gl : hal::gl::Flavour::Gles;
+    return hal::validate::wrap(hal::gl::create_device(options));
+  }
   hal::vulkan::DeviceOptions options;
   options.adapter = o.device;
   options.validation = o.validation;

@@ -16,7 +16,8 @@ struct SceneOptions {
   std::string method = "asvgf";
   std::string size = "128x128";
   std::uint32_t width = 128, height = 128;
-  std::string device;  // index or name part; empty: ASVGF_DEVICE, then the best device
+  std::string backend;  // vulkan, gl or gles; empty: ASVGF_BACKEND, else vulkan
+  std::string device;   // Vulkan: index or name part; empty: ASVGF_DEVICE, then the best device
   bool software_bvh = false;
   bool validation = false;
   std::uint32_t seed = 0;
@@ -25,14 +26,18 @@ struct SceneOptions {
   std::string kernel = "b3spline";
 };
 
-// Registers --scene --animation --method --size --device --software-bvh --validation --seed
-// --max-bounces and the denoiser parameters on `cmd`.
+// Registers --scene --animation --method --size --backend --device --software-bvh --validation
+// --seed --max-bounces and the denoiser parameters on `cmd`.
 void add_scene_options(CLI::App& cmd, SceneOptions& options);
 // Checks what CLI11 cannot (size syntax); throws CLI::ValidationError naming the option.
 void finish_scene_options(SceneOptions& options);
+// --backend, else $ASVGF_BACKEND, else "vulkan".
+std::string chosen_backend(const std::string& option);
 // The scene the options name: built-in, or loaded from the file.
 scene::Scene load_scene(const SceneOptions& options);
 render::RenderSettings render_settings(const SceneOptions& options);
+// The device of the chosen backend, behind the HAL validation layer. Throws hal::Error(NoDevice)
+// naming the backend when it has none, CLI::ValidationError for an unknown ASVGF_BACKEND.
 std::unique_ptr<hal::Device> open_device(const SceneOptions& options);
 
 }  // namespace asvgf::cli
