@@ -139,10 +139,6 @@ BufferHandle GlDevice::create_buffer(const BufferDesc& desc) {
 
 ImageHandle GlDevice::create_image(const ImageDesc& desc) {
   make_current();
-  if (context_.flavour() == Flavour::Gles && has(desc.usage, ImageUsage::Storage) && !es_storage_format(desc.format))
-    throw Error(ErrorKind::Unsupported, desc.name,
-                "format " + std::string(format_name(desc.format)) +
-                    " is not an OpenGL ES 3.1 image load/store format (storage usage)");
   ImageObject object{desc, 0, gl_format(desc.format)};
   glGenTextures(1, &object.texture);
   glBindTexture(GL_TEXTURE_2D, object.texture);
@@ -207,9 +203,20 @@ PipelineHandle GlDevice::create_pipeline(const ComputePipelineDesc& desc) {
 BindingSetHandle GlDevice::create_binding_set(const BindingSetDesc& desc) {
   const PipelineObject& pipeline = pipelines_.get(desc.pipeline.id, "pipeline");
   BindingSetObject object{desc.name, pipeline.shader, std::vector<Resource>(pipeline.shader->bindings.size())};
-  for (const auto& entry : desc.entries)
-    if (const ShaderBinding* b = pipeline.shader->find(entry.name))
-      object.bound[static_cast<std::size_t>(b - pipeline.shader->bindings.data())] = entry.resource;
+  for (const auto& entry : desc.entries) {
+    const ShaderBinding* b = pipeline.shader->find(entry.name);
+    if (!b) continue;
+    // Storage usage is only a promise; binding for image load/store is where ES draws the line.
+    if (b->kind == BindingKind::StorageImage && context_.flavour() == Flavour::Gles) {
+      const ImageObject& image = images_.get(entry.resource.id, "image");
+      if (!es_storage_format(image.desc.format))
+        throw Error(ErrorKind::Unsupported, image.desc.name,
+                    "format " + std::string(format_name(image.desc.format)) +
+                        " is not an OpenGL ES 3.1 image load/store format (binding '" + entry.name + "' of set '" +
+                        desc.name + "')");
+    }
+    object.bound[static_cast<std::size_t>(b - pipeline.shader->bindings.data())] = entry.resource;
+  }
   return BindingSetHandle{binding_sets_.add(std::move(object))};
 }
 

@@ -1,4 +1,7 @@
-// A Vulkan device with validation and synchronization validation whose messages fail the test.
+// The device a GPU test runs on, behind the HAL validation layer, whose backend messages fail the
+// test: Vulkan with validation and synchronization validation, or (in executables compiled with
+// ASVGF_TEST_BACKEND_GL = 1 for OpenGL 4.5, 2 for OpenGL ES 3.1) the OpenGL backend with its
+// debug-output errors. Tests written once against it run on each backend they are compiled for.
 #pragma once
 
 #include <doctest/doctest.h>
@@ -10,15 +13,26 @@
 #include "hal/hal.hpp"
 #include "hal/validate.hpp"
 #include "hal_vulkan/vulkan.hpp"
+#if defined(ASVGF_TEST_BACKEND_GL)
+#include "hal_gl/gl.hpp"
+#endif
 
 struct ValidatedDevice {
   std::vector<std::string> messages;
   std::unique_ptr<hal::Device> device;
 
   explicit ValidatedDevice(hal::vulkan::DeviceOptions options = {}) {
+#if defined(ASVGF_TEST_BACKEND_GL)
+    (void)options;
+    hal::gl::DeviceOptions gl;
+    gl.flavour = ASVGF_TEST_BACKEND_GL == 2 ? hal::gl::Flavour::Gles : hal::gl::Flavour::Gl;
+    gl.on_message = [this](const std::string& m) { messages.push_back(m); };
+    device = hal::validate::wrap(hal::gl::create_device(gl));
+#else
     options.validation = true;
     options.on_validation_message = [this](const std::string& m) { messages.push_back(m); };
     device = hal::validate::wrap(hal::vulkan::create_device(options));
+#endif
   }
   ~ValidatedDevice() {
     device.reset();
