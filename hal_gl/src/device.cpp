@@ -165,6 +165,24 @@ PipelineHandle GlDevice::create_pipeline(const ComputePipelineDesc& desc) {
     throw Error(ErrorKind::Unsupported, desc.name,
                 "shader '" + std::string(shader.name) + "' has no " +
                     (context_.flavour() == Flavour::Gles ? "ESSL" : "GLSL") + " source (ray-query variants have none)");
+  // Over a limit, the driver's link error would not say which: name the kind and both counts.
+  struct Limit {
+    BindingKind kind;
+    GLenum query;
+    const char* what;
+  };
+  const Limit limits[] = {{BindingKind::StorageBuffer, GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS, "storage blocks"},
+                          {BindingKind::StorageImage, GL_MAX_COMPUTE_IMAGE_UNIFORMS, "image uniforms"},
+                          {BindingKind::SampledImage, GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, "textures"},
+                          {BindingKind::UniformBuffer, GL_MAX_COMPUTE_UNIFORM_BLOCKS, "uniform blocks"}};
+  for (const Limit& l : limits) {
+    const auto used = std::count_if(shader.bindings.begin(), shader.bindings.end(),
+                                    [&](const ShaderBinding& b) { return b.kind == l.kind; });
+    if (used > gl_int(l.query))
+      throw Error(ErrorKind::Unsupported, desc.name,
+                  "shader '" + std::string(shader.name) + "' uses " + std::to_string(used) + " " + l.what + "; " +
+                      adapter_.name + " allows " + std::to_string(gl_int(l.query)) + " in a compute shader");
+  }
   const GLuint compute = glCreateShader(GL_COMPUTE_SHADER);
   const GLchar* text = source.data();
   const auto length = static_cast<GLint>(source.size());

@@ -1,6 +1,7 @@
 #include <nlohmann/json.hpp>
 
 #include "emit.hpp"
+#include "portability.hpp"
 
 namespace shaderc {
 
@@ -30,6 +31,7 @@ std::string json_text(const Options& o, const Reflection& r, const Targets& targ
       {"uniform_block_size", r.uniform_block_size},
       {"uniform_members", members},
       {"uses_ray_query", r.uses_ray_query},
+      {"es31_minimum", r.uses_ray_query ? "no ESSL (ray queries)" : es31_minimum_fit(r)},
       {"targets", targets.emitted},
       {"skipped_targets", targets.skipped},
   };

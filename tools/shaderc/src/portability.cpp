@@ -13,6 +13,28 @@ bool is_r32(const std::string& format) {
 
 }  // namespace
 
+std::string es31_minimum_fit(const Reflection& r) {
+  std::size_t counts[5] = {};
+  for (const auto& b : r.bindings) ++counts[static_cast<int>(b.kind)];
+  struct Limit {
+    Kind kind;
+    std::size_t guaranteed;
+    const char* what;
+  };
+  const Limit limits[] = {{Kind::StorageBuffer, 4, "storage blocks"},
+                          {Kind::StorageImage, 4, "image uniforms"},
+                          {Kind::SampledImage, 16, "textures"},
+                          {Kind::UniformBuffer, 12, "uniform blocks"}};
+  std::string over;
+  for (const Limit& l : limits) {
+    const std::size_t n = counts[static_cast<int>(l.kind)];
+    if (n > l.guaranteed)
+      over += (over.empty() ? "" : ", ") + std::to_string(n) + " " + l.what + " (ES 3.1 guarantees " +
+              std::to_string(l.guaranteed) + ")";
+  }
+  return over.empty() ? "fits" : over;
+}
+
 std::vector<std::string> check_portability(const Reflection& r, const std::string& shader, const std::string& source) {
   std::vector<std::string> errors;
   auto fail = [&](const std::string& rule, const std::string& detail, const std::string& rejected_by) {
