@@ -40,6 +40,10 @@ struct ValidatedDevice {
   }
   ValidatedDevice(const ValidatedDevice&) = delete;
   ValidatedDevice& operator=(const ValidatedDevice&) = delete;
-  hal::Device* operator->() { return device.get(); }
-  hal::Device& operator*() { return *device; }
+  hal::Device* operator->() {
+    return device.get();
+  }
+  hal::Device& operator*() {
+    return *device;
+  }
 };
