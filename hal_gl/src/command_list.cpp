@@ -21,13 +21,13 @@ class GlCommandList final : public CommandList {
   void reset() override { commands_.clear(); }
 
   void begin_label(std::string_view label) override {
-    if (!epoxy_has_gl_extension("GL_KHR_debug") && epoxy_gl_version() < 43) return;
+    if (!device_.debug_groups()) return;
     commands_.push_back([text = std::string(label)](GlDevice&) {
       glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, static_cast<GLsizei>(text.size()), text.data());
     });
   }
   void end_label() override {
-    if (!epoxy_has_gl_extension("GL_KHR_debug") && epoxy_gl_version() < 43) return;
+    if (!device_.debug_groups()) return;
     commands_.push_back([](GlDevice&) { glPopDebugGroup(); });
   }
 

@@ -99,6 +99,7 @@ class GlDevice final : public Device {
 
   // What replayed commands do (command_list.cpp records closures over these).
   void make_current() const { context_.make_current(); }
+  bool debug_groups() const { return debug_output_; }          // KHR_debug: labels become debug groups
   void check_gl(const std::string& object, const char* what);  // throws on a GL error
   void memory_barrier(State before, State after);
   void dispatch(PipelineHandle pipeline, BindingSetHandle set, const std::vector<std::byte>& uniforms, std::uint32_t x,

@@ -85,19 +85,19 @@ class ValidatingCommandList final : public CommandList {
     const PipelineInfo& pipeline = objects_.pipelines.get(desc.pipeline.id);
     const BindingSetInfo& set = objects_.binding_sets.get(desc.bindings.id);
     const ShaderInfo& shader = *pipeline.shader;
-    const std::string shader_name(shader.name);
+    const std::string_view shader_name = shader.name;  // strings are built only when a rule is broken
     // Pipelines of one shader share their binding layout, so a set made for any of them fits.
     if (set.shader->name != shader.name)
       throw Error(ErrorKind::InvalidUsage, set.name(),
                   "was made for shader '" + std::string(set.shader->name) + "' but pipeline '" + pipeline.name() +
-                      "' runs shader '" + shader_name + "' (dispatch in '" + name_ + "')");
+                      "' runs shader '" + std::string(shader_name) + "' (dispatch in '" + name_ + "')");
     for (std::size_t i = 0; i < shader.bindings.size(); ++i) {
       const ShaderBinding& binding = shader.bindings[i];
       if (binding.kind == BindingKind::UniformBuffer) continue;
       const Resource r = set.bound[i];
       if (r.id == 0)
         throw Error(ErrorKind::InvalidUsage, set.name(),
-                    "leaves binding '" + std::string(binding.name) + "' of shader '" + shader_name +
+                    "leaves binding '" + std::string(binding.name) + "' of shader '" + std::string(shader_name) +
                         "' unbound (dispatch in '" + name_ + "')");
       if (!alive(r))
         throw Error(
@@ -107,8 +107,8 @@ class ValidatingCommandList final : public CommandList {
     if (desc.uniforms.size() != shader.uniform_block_size)
       throw Error(ErrorKind::InvalidUsage, pipeline.name(),
                   "dispatch passes " + std::to_string(desc.uniforms.size()) + " bytes of uniforms; shader '" +
-                      shader_name + "' has a block of " + std::to_string(shader.uniform_block_size) + " (in '" + name_ +
-                      "')");
+                      std::string(shader_name) + "' has a block of " + std::to_string(shader.uniform_block_size) +
+                      " (in '" + name_ + "')");
     if (desc.groups_x == 0 || desc.groups_y == 0 || desc.groups_z == 0)
       throw Error(ErrorKind::InvalidUsage, pipeline.name(),
                   "dispatch of " + std::to_string(desc.groups_x) + "x" + std::to_string(desc.groups_y) + "x" +
