@@ -165,6 +165,8 @@ std::string command_line(const ReportOptions& o, int frames) {
                   " --seed " + std::to_string(o.scene.seed);
   if (!o.methods.empty()) s += " --methods " + o.methods;
   if (o.scene.software_bvh) s += " --software-bvh";
+  const std::string backend = chosen_backend(o.scene.backend);
+  if (backend != "vulkan") s += " --backend " + backend;
   if (o.timing != "auto") s += " --timing " + o.timing;
   return s;
 }
@@ -183,6 +185,7 @@ int run_report(ReportOptions& o) {
   d.animation = o.scene.animation;
   d.width = base.width, d.height = base.height, d.seed = base.seed, d.frames = frames;
   d.device_name = device->adapter().name;
+  if (chosen_backend(o.scene.backend) != "vulkan") d.device_name += ", " + device->adapter().api_version;
   d.device_type = std::string(hal::to_string(device->adapter().type));
   d.cpu_device = device->adapter().type == hal::DeviceType::Cpu;
   d.timestamps = device->capabilities().timestamps;
@@ -338,6 +341,7 @@ std::function<int()> add_report_command(CLI::App& app) {
       ->check(CLI::Range(1, 1 << 16))
       ->capture_default_str();
   cmd->add_option("--seed", s.seed, "Random seed: the same seed gives the same numbers")->capture_default_str();
+  add_backend_option(*cmd, s);
   cmd->add_option("--device", s.device, "Vulkan adapter: index or part of its name (default: $ASVGF_DEVICE, else best)");
   cmd->add_flag("--software-bvh", s.software_bvh, "Trace with the software BVH even where ray queries exist");
   cmd->add_option("--timing", o->timing,

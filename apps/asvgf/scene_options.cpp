@@ -22,6 +22,12 @@ std::string chosen_backend(const std::string& option) {
   return value;
 }
 
+void add_backend_option(CLI::App& cmd, SceneOptions& o) {
+  cmd.add_option("--backend", o.backend,
+                 "HAL backend: vulkan, gl (OpenGL 4.5) or gles (OpenGL ES 3.1) (default: $ASVGF_BACKEND, else vulkan)")
+      ->check(CLI::IsMember({"vulkan", "gl", "gles"}));
+}
+
 void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--scene", o.scene, "Built-in scene ('cornell') or a scene file (.json)")->capture_default_str();
   cmd.add_option("--animation", o.animation, "Animation of the built-in scene")
@@ -31,8 +37,7 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
       ->check(CLI::IsMember({"raw", "ema", "svgf", "asvgf", "reference"}))
       ->capture_default_str();
   cmd.add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
-  cmd.add_option("--backend", o.backend, "HAL backend: vulkan, gl (OpenGL 4.5) or gles (OpenGL ES 3.1) (default: $ASVGF_BACKEND, else vulkan)")
-      ->check(CLI::IsMember({"vulkan", "gl", "gles"}));
+  add_backend_option(cmd, o);
   cmd.add_option("--device", o.device, "Vulkan adapter: index or part of its name (default: $ASVGF_DEVICE, else best)");
   cmd.add_flag("--software-bvh", o.software_bvh, "Trace with the software BVH even where ray queries exist");
   cmd.add_flag("--validation", o.validation, "Enable the Vulkan validation layer (synchronization validation on)");

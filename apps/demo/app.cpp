@@ -7,8 +7,6 @@
 #include <cstdio>
 #include <thread>
 
-#include "hal/validate.hpp"
-#include "hal_vulkan/vulkan.hpp"
 #include "screenshot.hpp"
 
 namespace asvgf::demo {
@@ -20,26 +18,14 @@ constexpr float kDollyPerStep = 0.9f;          // distance factor per wheel step
 constexpr int kMaxAtrousIterations = 10;
 constexpr std::uint32_t kMinWindowSide = 512;  // small render sizes are scaled up to this
 
-std::unique_ptr<hal::Device> open_device(const DemoOptions& o, ValidationLog& log) {
-  hal::vulkan::DeviceOptions options;
-  options.adapter = o.scene.device;
-  options.validation = o.scene.validation;
-  options.on_validation_message = [&log](const std::string& message) {
-    ++log.messages;
-    std::fprintf(stderr, "%s\n", message.c_str());
-  };
-  options.instance_extensions = hal::vulkan::glfw_instance_extensions();
-  return hal::validate::wrap(hal::vulkan::create_device(options));
-}
-
 scene::Scene initial_scene(const DemoOptions& o) { return cli::load_scene(o.scene); }
 
 }  // namespace
 
-App::App(const DemoOptions& options, GLFWwindow* window, ValidationLog& log)
+App::App(const DemoOptions& options, WindowApi api, GLFWwindow* window, ValidationLog& log)
     : options_(options),
       window_(window),
-      device_(open_device(options, log)),
+      device_(open_window_device(api, window, options.scene.device, options.scene.validation, log)),
       scene_(initial_scene(options)),
       settings_(cli::render_settings(options.scene)),
       input_(window) {
@@ -55,7 +41,7 @@ App::App(const DemoOptions& options, GLFWwindow* window, ValidationLog& log)
   } else {
     make_renderer(settings_.width, settings_.height);
   }
-  presenter_ = std::make_unique<hal::vulkan::Presenter>(*device_, window, !options.no_vsync);
+  presenter_ = make_window_presenter(api, *device_, window, !options.no_vsync);
   to_present_ = device_->create_command_list("demo: to present");
   from_present_ = device_->create_command_list("demo: from present");
   std::printf("asvgf-demo: %s on %s (%s), %ux%u, %s; press H for the controls\n", scene_.original().name.c_str(),
@@ -247,8 +233,7 @@ int App::run() {
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (fps_.fps() == 0.0 && seconds > 0.0) fps_.set(frame_ / seconds);
   update_title();
-  std::printf("asvgf-demo: %d frames; swapchain created %u times; last frame: %s\n", frame_,
-              presenter_->swapchain_generation(), title_.c_str());
+  std::printf("asvgf-demo: %d frames; %s; last frame: %s\n", frame_, presenter_->history().c_str(), title_.c_str());
   return 0;
 }
 

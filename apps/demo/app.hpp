@@ -2,9 +2,9 @@
 // presenter, with the title as overlay, screenshots, resizes and minimising.
 //
 // Presentation: the Renderer leaves its display (or debug-view) image on the GPU in CopySrc
-// (RenderSettings::read_back = false); the app moves it to State::Present, the HAL presenter blits
-// it (linear filter, scaled) into the swapchain image, and the app moves it back to CopySrc for
-// the next frame. No raster pipeline, no host round trip.
+// (RenderSettings::read_back = false); the app moves it to State::Present, the backend's presenter
+// blits it (linear filter, scaled) into the swapchain image or the GL window's framebuffer, and the
+// app moves it back to CopySrc for the next frame. No raster pipeline, no host round trip.
 //
 // Sizes: the image is rendered at --size and scaled to the window, whatever its size; with
 // --fit-window the renderer is recreated at the window's framebuffer size on every resize
@@ -15,12 +15,12 @@
 #include <memory>
 #include <string>
 
-#include "hal_vulkan/presenter.hpp"
 #include "input.hpp"
 #include "interactive_scene.hpp"
 #include "options.hpp"
 #include "render/renderer.hpp"
 #include "title.hpp"
+#include "window_presenter.hpp"
 
 namespace asvgf::demo {
 
@@ -31,8 +31,8 @@ struct ValidationLog {
 
 class App {
  public:
-  // The window must be created with GLFW_CLIENT_API = GLFW_NO_API (glfwInit done by the caller).
-  App(const DemoOptions& options, GLFWwindow* window, ValidationLog& log);
+  // The window must be created after set_window_hints(api) (glfwInit done by the caller).
+  App(const DemoOptions& options, WindowApi api, GLFWwindow* window, ValidationLog& log);
   ~App();
   App(const App&) = delete;
   App& operator=(const App&) = delete;
@@ -57,7 +57,7 @@ class App {
   InteractiveScene scene_;
   render::RenderSettings settings_;
   std::unique_ptr<render::Renderer> renderer_;
-  std::unique_ptr<hal::vulkan::Presenter> presenter_;
+  std::unique_ptr<WindowPresenter> presenter_;
   std::unique_ptr<hal::CommandList> to_present_, from_present_;
   Input input_;
   FpsCounter fps_;

@@ -66,14 +66,18 @@ int main(int argc, char** argv) {
       return 1;
     }
     const auto size = window_size(options);
-    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+    const auto api = asvgf::demo::window_api(options.scene.backend);
+    asvgf::demo::set_window_hints(api);
     glfw.window = glfwCreateWindow(static_cast<int>(size.width), static_cast<int>(size.height), "asvgf-demo", nullptr,
                                    nullptr);
     if (!glfw.window) {
-      std::fprintf(stderr, "asvgf-demo: could not create a window\n");
+      std::fprintf(stderr, "asvgf-demo: could not create a window%s\n",
+                   api == asvgf::demo::WindowApi::Gl     ? " with an OpenGL 4.5 core context"
+                   : api == asvgf::demo::WindowApi::Gles ? " with an OpenGL ES 3.1 context"
+                                                         : "");
       return 1;
     }
-    asvgf::demo::App app(options, glfw.window, log);
+    asvgf::demo::App app(options, api, glfw.window, log);
     code = app.run();
   } catch (const hal::Error& e) {
     std::fprintf(stderr, "asvgf-demo: %s\n", e.what());

@@ -70,6 +70,7 @@ void add_demo_options(CLI::App& app, DemoOptions& o) {
 
 void finish(DemoOptions& o) {
   cli::finish_scene_options(o.scene);
+  o.scene.backend = cli::chosen_backend(o.scene.backend);  // --backend, else $ASVGF_BACKEND (checked here)
   if (!o.window.empty()) o.window_size = parse_size("--window", o.window);
   if (!o.resize_at.empty()) {
     try {

@@ -2,6 +2,7 @@
 #include "context.hpp"
 
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 #include "hal/error.hpp"
@@ -68,13 +69,20 @@ Context::Context(Flavour flavour) : flavour_(flavour) {
   make_current();
 }
 
+Context::Context(Flavour flavour, std::function<void()> adopt)
+    : flavour_(flavour), platform_("adopted"), adopt_(std::move(adopt)) {
+  make_current();
+}
+
 Context::~Context() {
+  if (adopted()) return;  // the caller's context outlives the device
   eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display_, context_);
   // The display is left initialised: terminating it would end other devices' contexts on it.
 }
 
 void Context::make_current() const {
+  if (adopted()) return adopt_();
   if (eglGetCurrentContext() == context_) return;
   if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
     throw Error(ErrorKind::DeviceLost, "OpenGL", "cannot make the context current: " + egl_error());

@@ -64,7 +64,7 @@ GLenum image_access(Access access) {
 
 }  // namespace
 
-GlDevice::GlDevice(const DeviceOptions& options) : options_(options), context_(options.flavour) {
+GlDevice::GlDevice(const DeviceOptions& options) : options_(options), context_(options.make_current ? Context(options.flavour, options.make_current) : Context(options.flavour)) {
   const bool es = options.flavour == Flavour::Gles;
   adapter_.name = gl_string(GL_RENDERER);
   adapter_.driver = gl_string(GL_VENDOR) + " " + gl_string(GL_VERSION);

@@ -113,6 +113,8 @@ class GlDevice final : public Device {
   void timestamp(TimerQueriesHandle timers, std::uint32_t query);
   // Reads a whole image into `pack` (a bound GL_PIXEL_PACK_BUFFER offset) or host memory.
   void read_texture(const ImageObject& image, void* destination);
+  // hal::gl::present: blits `image` to the adopted context's default framebuffer (present.cpp).
+  void present(ImageHandle image, std::uint32_t width, std::uint32_t height);
 
  private:
   DeviceOptions options_;

@@ -94,7 +94,7 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
            "is dark).\n\n";
   if (d.cpu_device)
     out << "> The device is " << d.device_name << " (" << d.device_type
-        << "): Vulkan on the CPU. Its \"GPU\" times are CPU-emulated timestamps, useful to compare passes with each "
+        << "): the graphics API run on the CPU. Its \"GPU\" times are CPU-emulated timestamps, useful to compare passes with each "
            "other on this machine and nothing else: they make no speed claim. Speed claims come from a real GPU.\n\n";
 
   out << "## Setup\n\n";

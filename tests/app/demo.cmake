@@ -48,6 +48,21 @@ asvgf_add_cli_test("asvgf-demo --fit-window resized at frame 3 renders at the ne
                    MATCH "frame 3: window resized to 48x40 \\(framebuffer 48x40\\).*6 frames. swapchain created ([2-9]|[1-9][0-9]) times.*48x40.*validation messages: 0"
                    COMMAND bash -c "set -o pipefail && ${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 6 --window 32x32 \
 --fit-window --method svgf --validation --resize-at 3 48x40 2>&1 | tr '\\n' ' '")
+# On the OpenGL backends the device adopts the window's context and the image is blitted into its
+# back buffer: the screenshot equals `asvgf render --backend gl`'s frame to the bit, and resizes
+# (with --fit-window the renderer too) keep GL's debug output silent.
+set(demo_gl_shot ${CMAKE_CURRENT_BINARY_DIR}/demo_gl_screenshot)
+asvgf_add_cli_test("asvgf-demo --backend gl and gles present through a GL window: frame 29 equals asvgf render --backend gl, resizes stay silent" LABEL app EXIT 0
+                   MATCH "framebuffer at 1 sizes.*validation messages: 0.*demo_compare_png: .*match.*frame 3: window resized to 48x40.*6 frames. framebuffer at 2 sizes.*48x40.*validation messages: 0.*frame 4: window resized to 96x72.*framebuffer at 2 sizes.*validation messages: 0"
+                   COMMAND bash -c "set -o pipefail && ( rm -rf '${demo_gl_shot}' && \
+$<TARGET_FILE:asvgf> render --backend gl --frames 30 --method asvgf --size 64x64 --animation orbit --seed 7 --out '${demo_gl_shot}' --quiet && \
+${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --backend gl --frames 30 --method asvgf --size 64x64 --animation orbit --seed 7 \
+--validation --screenshot '${demo_gl_shot}/demo.png' && \
+$<TARGET_FILE:demo_compare_png> '${demo_gl_shot}/frame_0029.png' '${demo_gl_shot}/demo.png' 0 0 && \
+${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --backend gl --frames 6 --window 32x32 --fit-window --method svgf --validation --resize-at 3 48x40 && \
+${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --backend gles --frames 8 --size 32x32 --method asvgf --animation light-exit --validation --resize-at 4 96x72 \
+) 2>&1 | tr '\\n' ' '")
+
 # The denoiser-state views (heat maps from debug_view.comp) on a frame where the box moves, so the
 # gradient passes run, for each method that has the buffer.
 asvgf_add_cli_test("asvgf-demo shows the gradient, alpha, variance and history views with no validation message" LABEL app EXIT 0
@@ -58,7 +73,8 @@ ${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 6 --size 32x32 --animati
 ${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 6 --size 32x32 --animation boxes-move --validation --view variance --method ema && \
 ${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 6 --size 32x32 --animation boxes-move --validation --view history \
 ) 2>&1 | tr '\\n' ' '")
-set_tests_properties("app: asvgf-demo shows the gradient, alpha, variance and history views with no validation message"
+set_tests_properties("app: asvgf-demo --backend gl and gles present through a GL window: frame 29 equals asvgf render --backend gl, resizes stay silent"
+                     "app: asvgf-demo shows the gradient, alpha, variance and history views with no validation message"
                      "app: asvgf-demo --frames 30 --screenshot equals asvgf render frame 29 under validation"
                      "app: asvgf-demo resized at frame 4 recreates the swapchain with no validation message"
                      "app: asvgf-demo --fit-window resized at frame 3 renders at the new size with no validation message"

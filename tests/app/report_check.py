@@ -6,6 +6,11 @@
                                            comparisons; every PNG is valid, non-empty, not flat
   report_check.py same DIR1 DIR2           report.csv equal except the GPU-time columns (*_ms)
   report_check.py differ DIR1 DIR2         the error columns differ (another seed)
+  report_check.py noise SAME OTHER_BACKEND OTHER_SEED
+                                           per run and error column (relMSE, SSIM, temporal error),
+                                           the run means, summed over runs, move less between SAME
+                                           and OTHER_BACKEND (same seed) than between SAME and
+                                           OTHER_SEED: the backend is within the seed's noise
   report_check.py timed DIR                every row has a positive whole-frame GPU time
   report_check.py energy DIR               report.md's energy bias is a number for every run, and for
                                            runs without a history (raw, accum-*) the ratio of
@@ -177,6 +182,36 @@ def differ(a, b):
     print("report_check: ok: %d of %d shared rows differ in relMSE" % (changed, len(common)))
 
 
+def noise(same_dir, backend_dir, seed_dir):
+    def means(directory):
+        sums = {}
+        for r in read_csv(directory):
+            for column in ("relmse", "ssim", "temporal"):
+                if r[column] == "":  # no temporal error on a run's first frame
+                    continue
+                total, n = sums.get((r["run"], column), (0.0, 0))
+                sums[(r["run"], column)] = (total + float(r[column]), n + 1)
+        return {k: total / n for k, (total, n) in sums.items()}
+
+    base, backend, seed = means(same_dir), means(backend_dir), means(seed_dir)
+    keys = sorted(k for k in base if k in backend and k in seed)
+    if not keys:
+        fail("the reports share no run")
+    by_column = {}
+    for run, column in keys:
+        moved, noise_scale = by_column.get(column, (0.0, 0.0))
+        by_column[column] = (moved + abs(base[(run, column)] - backend[(run, column)]),
+                             noise_scale + abs(base[(run, column)] - seed[(run, column)]))
+    for column, (moved, noise_scale) in sorted(by_column.items()):
+        if noise_scale == 0.0:
+            fail(column + ": another seed changes nothing, so there is no noise to compare with")
+        print("report_check: %s: the backend moves the run means by %.3g in all, another seed by %.3g (ratio %.2f)"
+              % (column, moved, noise_scale, moved / noise_scale))
+        if moved >= noise_scale:
+            fail(column + ": the backend moves the numbers as much as another seed or more")
+    print("report_check: ok: %d runs within noise" % len({run for run, _ in keys}))
+
+
 def timed(directory):
     """Every row of report.csv has a finite, positive whole-frame GPU time."""
     rows = read_csv(directory)
@@ -214,6 +249,8 @@ def energy(directory):
 if __name__ == "__main__":
     if len(sys.argv) >= 3 and sys.argv[1] == "check":
         check(sys.argv[2], sys.argv[3].split(",") if len(sys.argv) > 3 and sys.argv[3] else [])
+    elif len(sys.argv) == 5 and sys.argv[1] == "noise":
+        noise(sys.argv[2], sys.argv[3], sys.argv[4])
     elif len(sys.argv) == 3 and sys.argv[1] == "timed":
         timed(sys.argv[2])
     elif len(sys.argv) == 3 and sys.argv[1] == "energy":

@@ -22,10 +22,20 @@ struct DeviceOptions {
   Flavour flavour = Flavour::Gl;
   // GL debug-output errors (KHR_debug) go here; stderr when empty.
   std::function<void(const std::string&)> on_message;
+  // Set: adopt the context current on the calling thread (a window's, e.g. GLFW's) instead of
+  // creating a headless one; the device calls this to make that context current again before its
+  // GL calls. The context must be OpenGL 4.5+ core for Flavour::Gl, OpenGL ES 3.1+ for Gles.
+  std::function<void()> make_current;
 };
 
 // Creates a device on a new context of `options.flavour`. Throws hal::Error(NoDevice) when EGL or
 // the context cannot be created (naming the EGL error), Unsupported when the context lacks compute.
 std::unique_ptr<hal::Device> create_device(const DeviceOptions& options = {});
+
+// Shows `image` (in State::Present, created with CopySrc usage, a float or unorm format) on the
+// default framebuffer of the device's adopted context, scaled to width x height with a linear
+// blit, its first row at the top. The caller swaps the buffers. Throws InvalidUsage when `device`
+// (or the device behind the validation layer) is not an OpenGL device with an adopted context.
+void present(hal::Device& device, hal::ImageHandle image, std::uint32_t width, std::uint32_t height);
 
 }  // namespace hal::gl
