@@ -1,7 +1,9 @@
 // The device a GPU test runs on, behind the HAL validation layer, whose backend messages fail the
 // test: Vulkan with validation and synchronization validation, or (in executables compiled with
 // ASVGF_TEST_BACKEND_GL = 1 for OpenGL 4.5, 2 for OpenGL ES 3.1) the OpenGL backend with its
-// debug-output errors. Tests written once against it run on each backend they are compiled for.
+// debug-output errors, or (with ASVGF_TEST_BACKEND_WEBGPU) the shaders' WGSL in Dawn through the
+// test-only backend in tests/wgsl. Tests written once against it run on each backend they are
+// compiled for.
 #pragma once
 
 #include <doctest/doctest.h>
@@ -16,13 +18,25 @@
 #if defined(ASVGF_TEST_BACKEND_GL)
 #include "hal_gl/gl.hpp"
 #endif
+#if defined(ASVGF_TEST_BACKEND_WEBGPU)
+#include "dawn_device.hpp"
+#endif
 
 struct ValidatedDevice {
   std::vector<std::string> messages;
   std::unique_ptr<hal::Device> device;
 
   explicit ValidatedDevice(hal::vulkan::DeviceOptions options = {}) {
-#if defined(ASVGF_TEST_BACKEND_GL)
+#if defined(ASVGF_TEST_BACKEND_WEBGPU)
+    (void)options;
+    hal::dawn_node::DeviceOptions dawn;
+    dawn.node = ASVGF_TEST_NODE;
+    dawn.server = ASVGF_TEST_WEBGPU_SERVER;
+    dawn.node_modules = ASVGF_TEST_NODE_MODULES;
+    dawn.shader_dir = ASVGF_TEST_SHADER_DIR;
+    dawn.on_message = [this](const std::string& m) { messages.push_back(m); };
+    device = hal::validate::wrap(hal::dawn_node::create_device(dawn));
+#elif defined(ASVGF_TEST_BACKEND_GL)
     (void)options;
     hal::gl::DeviceOptions gl;
     gl.flavour = ASVGF_TEST_BACKEND_GL == 2 ? hal::gl::Flavour::Gles : hal::gl::Flavour::Gl;
