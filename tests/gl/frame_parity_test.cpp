@@ -8,8 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "hal/validate.hpp"
-#include "hal_gl/gl.hpp"
+#include "gl/gl_device.hpp"
 #include "pipeline/frame_parity.hpp"
 #include "vulkan/validated_device.hpp"
 
@@ -22,11 +21,8 @@ TEST_CASE("every method's frames on OpenGL and OpenGL ES match Vulkan's software
                                    frame::Method::Reference};
   for (const auto flavour : {hal::gl::Flavour::Gl, hal::gl::Flavour::Gles}) {
     std::vector<std::string> messages;
-    hal::gl::DeviceOptions options;
-    options.flavour = flavour;
-    options.on_message = [&messages](const std::string& m) { messages.push_back(m); };
-    const auto gl = hal::validate::wrap(hal::gl::create_device(options));
-    const std::string backend = flavour == hal::gl::Flavour::Gl ? "gl" : "gles";
+    const auto gl = open_gl(flavour, messages);
+    const std::string backend = flavour_name(flavour);
     for (const frame::Method method : methods) {
       const std::string name(frame::to_string(method));
       CAPTURE(backend);

@@ -15,7 +15,7 @@
 #include <cstring>
 #include <string>
 
-#include "hal_gl/gl.hpp"
+#include "gl/gl_device.hpp"
 #include "pipeline/frame_inputs.hpp"
 #include "scene/builtin.hpp"
 #include "vulkan/validated_device.hpp"
@@ -99,11 +99,8 @@ TEST_CASE(
   const std::uint32_t w = 48, h = 40;
   for (const auto flavour : {hal::gl::Flavour::Gl, hal::gl::Flavour::Gles}) {
     std::vector<std::string> messages;
-    hal::gl::DeviceOptions options;
-    options.flavour = flavour;
-    options.on_message = [&messages](const std::string& m) { messages.push_back(m); };
-    const auto gl = hal::validate::wrap(hal::gl::create_device(options));
-    const std::string backend = flavour == hal::gl::Flavour::Gl ? "gl" : "gles";
+    const auto gl = open_gl(flavour, messages);
+    const std::string backend = flavour_name(flavour);
     for (const std::string animation : {"static", "boxes-move", "orbit"}) {
       CAPTURE(backend);
       CAPTURE(animation);
