@@ -1,12 +1,17 @@
 // `asvgf bench`: GPU time per pass and rays per second of the frame, from timestamps, after warm-up
-// frames; medians over the measured frames. On a CPU device (lavapipe) the "GPU" times are the
-// CPU's, which the output says.
+// frames; medians over the measured frames. Beside each pass: the bytes its declarations say it
+// must read and write, the floor those bytes give at the bandwidth a buffer copy reaches on the
+// same device (measured right after the frames), and the measured time over that floor. On a CPU
+// device (lavapipe) the "GPU" times are the CPU's, which the output says.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <vector>
 
 #include "commands.hpp"
+#include "copy_bandwidth.hpp"
+#include "graph/pass_traffic.hpp"
 #include "scene_options.hpp"
 
 namespace asvgf::cli {
@@ -17,6 +22,17 @@ struct BenchOptions {
   int warmup = 2;
   int frames = 5;
   int first_frame = 4;
+  int bandwidth_mib = 0;  // 0: 256 MiB on a GPU, 16 MiB on a CPU device
+  float time_step = 1.0f;  // scene time per frame
+};
+
+// The passes that trace rays; every other pass of the frame is the denoiser's (the gradient chain
+// included), which the denoiser line sums.
+bool traces(const std::string& pass) { return pass == "gbuffer" || pass == "pathtrace"; }
+
+struct Floor {
+  std::uint64_t bytes = 0;
+  bool counted = true;  // false: the pass also reads scene buffers of unknown size: the floor is low
 };
 
 double median(std::vector<double> v) {
@@ -30,18 +46,25 @@ int run_bench(BenchOptions& o) {
   const scene::Scene scene = load_scene(o.scene);
   auto device = open_device(o.scene);
   render::RenderSettings settings = render_settings(o.scene);
+  settings.read_back = false;  // nothing leaves the GPU: frames run back to back, as in a renderer
+  settings.time_per_frame = o.time_step;
   render::Renderer renderer(*device, scene, settings);
   const bool cpu = device->adapter().type == hal::DeviceType::Cpu;
   std::printf("device:   %s%s\n", device->adapter().name.c_str(), cpu ? " (a CPU: times are not GPU times)" : "");
   std::printf("tracing:  %s\n", renderer.ray_query() ? "ray queries" : "software BVH");
-  std::printf("frame:    %s, %s, %ux%u, %d warm-up + %d measured frames from frame %d\n", scene.name.c_str(),
-              o.scene.method.c_str(), settings.width, settings.height, o.warmup, o.frames, o.first_frame);
+  std::printf("frame:    %s, %s, %ux%u, %d warm-up + %d measured frames from frame %d, scene time %g a frame\n",
+              scene.name.c_str(), o.scene.method.c_str(), settings.width, settings.height, o.warmup, o.frames,
+              o.first_frame, o.time_step);
   std::map<std::string, std::vector<double>> pass_ms;
   std::vector<std::string> order;
   std::vector<double> frame_ms, rays_per_s, trace_ms;
+  int moving = 0;
+  // Render frame numbers whose scene time (frame x time step) starts at --first-frame.
+  const int start = static_cast<int>(std::lround(o.first_frame / o.time_step));
   for (int i = 0; i < o.warmup + o.frames; ++i) {
-    renderer.render(o.first_frame + i);
+    renderer.render(start + i);
     if (i < o.warmup) continue;
+    moving += renderer.moved_last_frame();
     double total = 0.0, tracing = 0.0;
     for (const auto& t : renderer.timings()) {
       if (!t.gpu_ms) {
@@ -57,9 +80,43 @@ int run_bench(BenchOptions& o) {
     trace_ms.push_back(tracing);
     rays_per_s.push_back(tracing > 0 ? double(renderer.rays_last_frame()) / (tracing * 1e-3) : 0.0);
   }
-  std::printf("\n%-22s %10s\n", "pass", "ms (median)");
-  for (const auto& p : order) std::printf("%-22s %10.3f\n", p.c_str(), median(pass_ms[p]));
-  std::printf("%-22s %10.3f\n", "frame", median(frame_ms));
+  // The bytes of the last frame's passes; the measured frames all run the same passes.
+  std::map<std::string, Floor> floors;
+  for (const auto& t : graph::pass_traffic(renderer.last_frame()))
+    floors[t.pass] = {t.read_bytes + t.written_bytes, !t.uncounted_reads};
+  const std::uint64_t copy_bytes =
+      std::uint64_t(o.bandwidth_mib > 0 ? o.bandwidth_mib : cpu ? 16 : 256) << 20;
+  const auto bandwidth = measure_copy_bandwidth(*device, std::min(copy_bytes, device->capabilities().max_buffer_size), 20);
+  const double per_ms = bandwidth ? bandwidth->bytes_per_second * 1e-3 : 0.0;  // bytes per millisecond
+
+  auto row = [&](const std::string& name, double ms, const Floor& f) {
+    std::printf("%-22s %10.3f %10.2f", name.c_str(), ms, double(f.bytes) / 1e6);
+    if (per_ms > 0 && f.bytes > 0)
+      std::printf(" %10.4f %8.1f", double(f.bytes) / per_ms, ms / (double(f.bytes) / per_ms));
+    else
+      std::printf(" %10s %8s", "-", "-");
+    std::printf("%s\n", f.counted ? "" : "  + scene reads");
+  };
+  std::printf("\n%-22s %10s %10s %10s %8s\n", "pass", "ms", "MB moved", "floor ms", "x floor");
+  std::vector<double> denoiser_ms(frame_ms.size(), 0.0);
+  Floor denoiser;
+  for (const auto& p : order) {
+    row(p, median(pass_ms[p]), floors[p]);
+    if (traces(p)) continue;
+    for (std::size_t f = 0; f < pass_ms[p].size() && f < denoiser_ms.size(); ++f) denoiser_ms[f] += pass_ms[p][f];
+    denoiser.bytes += floors[p].bytes;
+    denoiser.counted = denoiser.counted && floors[p].counted;
+  }
+  std::printf("%-22s %10.3f   (%d of %d measured frames moving%s)\n", "frame", median(frame_ms), moving, o.frames,
+              moving < o.frames ? ": still frames skip the gradient passes; see --time-step" : "");
+  row("denoiser", median(denoiser_ms), denoiser);
+  std::printf("  (ms: medians; denoiser: every pass but gbuffer and pathtrace, summed per frame; MB moved: the\n"
+              "  bytes each pass's declared images and buffers hold, read plus written, each once; + scene reads:\n"
+              "  the pass also traverses the scene, whose reads the floor leaves out)\n");
+  if (bandwidth)
+    std::printf("\ncopy bandwidth:        %.3f TB/s (a %llu MiB buffer copy, read + written, median of 20: %.4f ms)\n",
+                bandwidth->bytes_per_second * 1e-12, static_cast<unsigned long long>(bandwidth->bytes >> 20),
+                bandwidth->median_ms);
   std::printf("\nrays per frame:        %llu (primary + path continuation + shadow)\n",
               static_cast<unsigned long long>(renderer.rays_last_frame()));
   std::printf("tracing time:          %.3f ms (gbuffer + pathtrace)\n", median(trace_ms));
@@ -78,6 +135,14 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_option("--first-frame", o->first_frame, "Animation frame to start at")
       ->check(CLI::Range(0, 100000))
       ->capture_default_str();
+  cmd->add_option("--time-step", o->time_step,
+                  "Scene time per frame: below 1 the animation plays in slow motion, so that long warm-ups still "
+                  "measure moving frames (light-exit moves between its frames 3 and 9)")
+      ->check(CLI::Range(0.0001, 100.0))
+      ->capture_default_str();
+  cmd->add_option("--bandwidth-mib", o->bandwidth_mib,
+                  "Size of the copy that measures the bandwidth for the floors (default: 256 on a GPU, 16 on a CPU)")
+      ->check(CLI::Range(1, 4096));
   return [o] { return run_bench(*o); };
 }
 

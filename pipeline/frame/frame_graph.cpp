@@ -3,6 +3,10 @@
 
 namespace asvgf::frame {
 
+namespace {
+constexpr std::uint64_t kRayCounterSize = 4;  // pathtrace.comp's one uint RayCounter.count
+}  // namespace
+
 using graph::Lifetime;
 using graph::ResourceId;
 
@@ -36,9 +40,9 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   denoise.adaptive = s.method == Method::Asvgf;
 
   const passes::SceneInputs scene = passes::import_scene(g, scene_gpu, w, h);
-  const ResourceId hdr = g.import("hdr", targets.hdr, targets.hdr_state, w, h);
-  const ResourceId display = g.import("display", targets.display, targets.display_state, w, h);
-  const ResourceId rays = g.import("ray_counter", targets.ray_counter, targets.ray_counter_state);
+  const ResourceId hdr = g.import("hdr", targets.hdr, targets.hdr_state, w, h, F::RGBA32F);
+  const ResourceId display = g.import("display", targets.display, targets.display_state, w, h, F::RGBA8Unorm);
+  const ResourceId rays = g.import_buffer("ray_counter", targets.ray_counter, targets.ray_counter_state, kRayCounterSize);
   const ResourceId counters = counters_.import(g);
   g.output(rays, hal::State::CopySrc);
   // Persistent: read next frame as histories.
@@ -86,7 +90,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   g.output(display, hal::State::CopySrc);
 
   // The intermediate-buffer view is an output only when asked for; otherwise it is culled.
-  const ResourceId debug = targets.debug ? g.import("debug_view", targets.debug, targets.debug_state, w, h)
+  const ResourceId debug = targets.debug ? g.import("debug_view", targets.debug, targets.debug_state, w, h, F::RGBA8Unorm)
                                          : g.add_image("debug_view", w, h, F::RGBA8Unorm);
   passes::add_debug_view(g, pipelines_,
                          {depth_normal, motion, albedo, illumination, debug, denoised.gradient, denoised.moments,

@@ -67,10 +67,11 @@ ResourceId RenderGraph::add_buffer(std::string name, std::uint64_t size, Lifetim
 }
 
 ResourceId RenderGraph::import(std::string name, hal::Resource resource, hal::State state, std::uint32_t width,
-                               std::uint32_t height) {
+                               std::uint32_t height, hal::Format format) {
   ResourceDecl d;
   d.width = width;
   d.height = height;
+  d.format = format;
   d.name = std::move(name);
   d.kind = resource.kind;
   d.lifetime = Lifetime::Imported;
@@ -78,6 +79,12 @@ ResourceId RenderGraph::import(std::string name, hal::Resource resource, hal::St
   d.imported_state = state;
   resources_.push_back(std::move(d));
   return static_cast<ResourceId>(resources_.size() - 1);
+}
+
+ResourceId RenderGraph::import_buffer(std::string name, hal::BufferHandle buffer, hal::State state, std::uint64_t size) {
+  const ResourceId id = import(std::move(name), buffer, state);
+  resources_[id].size = size;
+  return id;
 }
 
 PassBuilder RenderGraph::add_pass(std::string name) {

@@ -90,9 +90,12 @@ class RenderGraph {
                        Lifetime lifetime = Lifetime::Transient);
   ResourceId add_buffer(std::string name, std::uint64_t size, Lifetime lifetime = Lifetime::Transient);
   // An object owned outside the graph, in `state` now. Images give their size so that passes can
-  // size their dispatches from the declaration.
+  // size their dispatches from the declaration, and their format so that the bytes passes move
+  // through them can be counted (pass_traffic.hpp); Undefined leaves them uncounted.
   ResourceId import(std::string name, hal::Resource resource, hal::State state, std::uint32_t width = 0,
-                    std::uint32_t height = 0);
+                    std::uint32_t height = 0, hal::Format format = hal::Format::Undefined);
+  // An imported buffer of known size (counted by pass_traffic; import() leaves buffers uncounted).
+  ResourceId import_buffer(std::string name, hal::BufferHandle buffer, hal::State state, std::uint64_t size);
   PassBuilder add_pass(std::string name);
   // Resources the frame exists to produce; passes that contribute to none of them are culled.
   // With `final_state`, the frame ends with a barrier moving the resource there (e.g. CopySrc for

@@ -64,7 +64,7 @@ SanitizeCounters::~SanitizeCounters() {
 }
 
 graph::ResourceId SanitizeCounters::import(graph::RenderGraph& graph) {
-  const graph::ResourceId id = graph.import("sanitize_counters", buffer_, state_);
+  const graph::ResourceId id = graph.import_buffer("sanitize_counters", buffer_, state_, kSize);
   // An output with a final state: the frame leaves the buffer in ShaderWrite whatever runs, so the
   // state recorded here for the next import is a guarantee, not an assumption about the passes.
   graph.output(id, hal::State::ShaderWrite);

@@ -83,8 +83,9 @@ Renderer::~Renderer() {
 
 FrameImages Renderer::render(int frame) {
   if (frame <= last_frame_) runtime_.reset_histories();  // a jump back: nothing from before is valid
-  const bool moved = scene_gpu_.update(static_cast<float>(frame));
+  const bool moved = scene_gpu_.update(static_cast<float>(frame) * settings_.time_per_frame);
   const bool first = last_frame_ < 0 || frame <= last_frame_;
+  moved_last_frame_ = moved && !first;
   last_frame_ = frame;
   // A progressive reference continues last frame's mean while nothing moved (after a method change
   // the runtime's reset histories make the accumulation read as unwritten zeros: a fresh start).

@@ -22,6 +22,9 @@ struct RenderSettings : frame::FrameConfig {
   bool progressive = false;
   // False: render() returns only the size; the images stay on the GPU (display_image(), the demo).
   bool read_back = true;
+  // Scene time per frame: 1 renders the animation at its keyframes' pace; smaller steps render it
+  // in slow motion (the benchmark keeps a short move going for hundreds of frames).
+  float time_per_frame = 1.0f;
 };
 
 struct FrameImages {
@@ -56,6 +59,9 @@ class Renderer {
   bool ray_query() const { return scene_gpu_.ray_query(); }
   // Rays traced in the last frame: one primary ray per pixel (gbuffer) plus the path tracer's.
   std::uint64_t rays_last_frame() const { return rays_last_frame_; }
+  // Whether something in the scene, camera or lights moved between the last two frames (the
+  // gradient passes ran).
+  bool moved_last_frame() const { return moved_last_frame_; }
   // Samples per pixel actually traced per frame (the reference rounds up to equal batches).
   std::uint32_t spp_per_frame() const { return batches_ * batch_spp_; }
 
@@ -74,6 +80,7 @@ class Renderer {
   int last_frame_ = -1;
   void set_batches();
   std::uint64_t rays_last_frame_ = 0;
+  bool moved_last_frame_ = false;
 };
 
 }  // namespace asvgf::render

@@ -11,3 +11,5 @@ asvgf_add_shader(gradient_select SOURCE frame/gradient_select.comp)
 asvgf_add_shader(gradient_resolve SOURCE frame/gradient_resolve.comp)
 asvgf_add_shader(accumulate SOURCE frame/accumulate.comp)
 asvgf_add_shader(debug_view SOURCE frame/debug_view.comp)
+# Not a frame pass: the benchmark's bandwidth measurement.
+asvgf_add_shader(bandwidth_copy SOURCE frame/bandwidth_copy.comp)

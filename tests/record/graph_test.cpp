@@ -8,6 +8,7 @@
 #include "frame/frame_graph.hpp"
 #include "scene/builtin.hpp"
 #include "graph/graph_runtime.hpp"
+#include "graph/pass_traffic.hpp"
 #include "checked_record.hpp"
 #include "hal/error.hpp"
 #include "hal_record/record_device.hpp"
@@ -281,6 +282,33 @@ TEST_CASE("on a small known graph the derived barriers are exactly the expected 
   device.submit(*cmd);
   device.wait();
   CHECK_MESSAGE(checked.record.reports().empty(), messages(checked.record));
+}
+
+TEST_CASE("pass traffic: each declared image and sized buffer counts once per pass, read and written separately") {
+  CheckedRecord checked;
+  graph::GraphRuntime runtime(checked.device);
+  graph::RenderGraph g;
+  const auto scene = checked.device.create_buffer({"scene", 1000, hal::BufferUsage::Storage});
+  const auto counter = checked.device.create_buffer({"counter", 16, hal::BufferUsage::Storage});
+  const auto in = g.import("scene", scene, State::ShaderRead);                  // size unknown: uncounted
+  const auto count = g.import_buffer("counter", counter, State::ShaderWrite, 16);  // 16 bytes
+  const auto a = g.add_image("a", 10, 6, hal::Format::RGBA16F);                  // 480 bytes
+  const auto h = g.add_image("h", 10, 6, hal::Format::R32F, Lifetime::Persistent);  // 240 bytes
+  const auto out = g.add_image("out", 10, 6, hal::Format::RGBA32F);               // 960 bytes
+  g.add_pass("trace").read(in).write(a).read_write(count);
+  g.add_pass("filter").read(a).read_history(h).write(h).write(out);
+  g.output(out);
+  g.output(count);
+  const auto traffic = graph::pass_traffic(runtime.compile(g));
+  REQUIRE(traffic.size() == 2);
+  CHECK(traffic[0].pass == "trace");
+  CHECK(traffic[0].read_bytes == 16);
+  CHECK(traffic[0].written_bytes == 480 + 16);
+  CHECK(traffic[0].uncounted_reads);
+  CHECK(traffic[1].pass == "filter");
+  CHECK(traffic[1].read_bytes == 480 + 240);
+  CHECK(traffic[1].written_bytes == 240 + 960);
+  CHECK_FALSE(traffic[1].uncounted_reads);
 }
 
 TEST_CASE("history ping-pong: a pass reads last frame's version, cleared on the first frame and after a reset") {
