@@ -118,7 +118,7 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
                    {{"claims", t.claims},
                     {"gradient_seeds", t.gradient_seeds},
                     {"gradient_prev", t.gradient_prev}},
-                   to_bytes(clear), {sw, sh, 1})
+                   to_bytes(clear), {width, height, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
   // Bids, then the winners write: the lowest bid wins whatever order invocations run in.
   const GradientSelectParams select{uniform_camera<shaders::gradient_select_uniforms::Camera>(scene.camera),

@@ -52,8 +52,8 @@ double magnitude(const ImageD& img) {
 TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames captured from the built-in scene") {
   ValidatedDevice device;
   const auto scene = asvgf::scene::builtin_scene("cornell", "orbit");
-  const FrameInputs prev = render_frame_inputs(*device, scene, true, kW, kH, 5);
-  const FrameInputs cur = render_frame_inputs(*device, scene, true, kW, kH, 6);
+  const FrameInputs prev = render_frame_inputs(*device, scene, device->capabilities().ray_query, kW, kH, 5);
+  const FrameInputs cur = render_frame_inputs(*device, scene, device->capabilities().ray_query, kW, kH, 6);
 
   SUBCASE("temporal (constant alpha) reprojects along the captured motion") {
     passes::PipelineCache pipelines(*device);
