@@ -17,7 +17,8 @@ std::optional<CopyBandwidth> measure_copy_bandwidth(hal::Device& device, std::ui
   const hal::TimerQueriesHandle timers =
       device.create_timer_queries({"bandwidth copies", static_cast<std::uint32_t>(repeats)});
   const hal::PipelineHandle pipeline = device.create_pipeline({"bandwidth copy", &shaders::bandwidth_copy});
-  const hal::BindingSetHandle set = device.create_binding_set({"bandwidth copy", pipeline, {{"src", src}, {"dst", dst}}});
+  const hal::BindingSetHandle set =
+      device.create_binding_set({"bandwidth copy", pipeline, {{"src", src}, {"dst", dst}}});
   // Enough workgroups to fill any GPU, each invocation striding over the rest.
   const std::uint32_t groups = 8192, size = shaders::bandwidth_copy.workgroup_size[0];
   shaders::bandwidth_copy_uniforms::Params params{};
@@ -26,7 +27,8 @@ std::optional<CopyBandwidth> measure_copy_bandwidth(hal::Device& device, std::ui
 
   auto commands = device.create_command_list("copy bandwidth");
   commands->clear_buffer(src, 0u);  // defined contents; the copy does not care which
-  commands->barrier({{src, hal::State::CopyDst, hal::State::ShaderRead}, {dst, hal::State::Undefined, hal::State::ShaderWrite}});
+  commands->barrier(
+      {{src, hal::State::CopyDst, hal::State::ShaderRead}, {dst, hal::State::Undefined, hal::State::ShaderWrite}});
   for (int r = 0; r < repeats; ++r) {
     if (r > 0) commands->barrier({dst, hal::State::ShaderWrite, hal::State::ShaderWrite});  // one copy at a time
     commands->begin_timer(timers, static_cast<std::uint32_t>(r));

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "hal/fault.hpp"
 #include "hal/validate.hpp"
 #include "hal_gl/gl.hpp"
 #include "hal_vulkan/vulkan.hpp"
@@ -100,17 +101,28 @@ render::RenderSettings render_settings(const SceneOptions& o) {
   return s;
 }
 
+std::unique_ptr<hal::Device> app_device(std::unique_ptr<hal::Device> backend) {
+  std::optional<hal::fault::EnvironmentPlan> faults;
+  try {
+    faults = hal::fault::from_environment();
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError(e.what());
+  }
+  if (faults) backend = hal::fault::wrap(std::move(backend), faults->plan, faults->report_counts);
+  return hal::validate::wrap(std::move(backend));
+}
+
 std::unique_ptr<hal::Device> open_device(const SceneOptions& o) {
   const std::string backend = chosen_backend(o.backend);
   if (backend == "gl" || backend == "gles") {
     hal::gl::DeviceOptions options;
     options.flavour = backend == "gl" ? hal::gl::Flavour::Gl : hal::gl::Flavour::Gles;
-    return hal::validate::wrap(hal::gl::create_device(options));
+    return app_device(hal::gl::create_device(options));
   }
   hal::vulkan::DeviceOptions options;
   options.adapter = o.device;
   options.validation = o.validation;
-  return hal::validate::wrap(hal::vulkan::create_device(options));
+  return app_device(hal::vulkan::create_device(options));
 }
 
 }  // namespace asvgf::cli

@@ -41,5 +41,8 @@ render::RenderSettings render_settings(const SceneOptions& options);
 // The device of the chosen backend, behind the HAL validation layer. Throws hal::Error(NoDevice)
 // naming the backend when it has none, CLI::ValidationError for an unknown ASVGF_BACKEND.
 std::unique_ptr<hal::Device> open_device(const SceneOptions& options);
+// What every app device goes through: the fault-injection layer when ASVGF_FAULT asks for it (a
+// test hook, hal/fault.hpp; a malformed value is a CLI::ValidationError), then the validation layer.
+std::unique_ptr<hal::Device> app_device(std::unique_ptr<hal::Device> backend);
 
 }  // namespace asvgf::cli

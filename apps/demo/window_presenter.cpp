@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "app.hpp"
-#include "hal/validate.hpp"
+#include "scene_options.hpp"
 #include "hal_gl/gl.hpp"
 #include "hal_vulkan/presenter.hpp"
 #include "hal_vulkan/vulkan.hpp"
@@ -86,14 +86,14 @@ std::unique_ptr<hal::Device> open_window_device(WindowApi api, GLFWwindow* windo
       if (glfwGetCurrentContext() != window) glfwMakeContextCurrent(window);
     };
     glfwMakeContextCurrent(window);
-    return hal::validate::wrap(hal::gl::create_device(options));
+    return cli::app_device(hal::gl::create_device(options));
   }
   hal::vulkan::DeviceOptions options;
   options.adapter = adapter;
   options.validation = validation;
   options.on_validation_message = count;
   options.instance_extensions = hal::vulkan::glfw_instance_extensions();
-  return hal::validate::wrap(hal::vulkan::create_device(options));
+  return cli::app_device(hal::vulkan::create_device(options));
 }
 
 std::unique_ptr<WindowPresenter> make_window_presenter(WindowApi api, hal::Device& device, GLFWwindow* window,

@@ -2,6 +2,7 @@
 // transfers against the HAL contract, then forwards to the wrapped backend.
 #include <string>
 
+#include "hal/layer.hpp"
 #include "hal/validate.hpp"
 #include "objects.hpp"
 
@@ -28,13 +29,13 @@ const char* resource_kind(ResourceKind kind) {
   return "resource";
 }
 
-class ValidatingDevice final : public Device {
+class ValidatingDevice final : public Device, public DeviceLayer {
  public:
   explicit ValidatingDevice(std::unique_ptr<Device> inner) : inner_(std::move(inner)) {
     if (!inner_) throw Error(ErrorKind::InvalidUsage, "validate", "wrap() needs a device");
     objects_.capabilities = &inner_->capabilities();
   }
-  Device& inner() { return *inner_; }
+  Device& inner() override { return *inner_; }
 
   const AdapterInfo& adapter() const override { return inner_->adapter(); }
   const Capabilities& capabilities() const override { return inner_->capabilities(); }
@@ -334,9 +335,6 @@ std::unique_ptr<Device> wrap(std::unique_ptr<Device> inner) {
   return std::make_unique<ValidatingDevice>(std::move(inner));
 }
 
-Device& unwrap(Device& device) {
-  auto* validating = dynamic_cast<ValidatingDevice*>(&device);
-  return validating ? validating->inner() : device;
-}
+Device& unwrap(Device& device) { return backend_of(device); }
 
 }  // namespace hal::validate

@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""Fault sweep (standard library only): runs a command once with ASVGF_FAULT=count to learn how
+many HAL calls of each kind it makes, then once per call with ASVGF_FAULT=<kind>:<n>, and checks
+every run: either exit code 1 with a message on stderr naming the injected fault, or (a fault in
+the teardown after the work was done, e.g. a destructor's wait) exit code 0 with exactly the files
+of the unfaulted run; never a crash or an abort; and every file in the output folder whole (PNGs
+decode with valid CRCs, EXRs start with the OpenEXR magic number, no `.partial` or `.tmp` file
+left behind).
+
+  fault_sweep.py OUT_DIR -- COMMAND...   COMMAND writes into OUT_DIR (cleared before each run)
+
+Prints one line per kind and a total; exits 1 on the first failing run, naming it.
+"""
+import os
+import re
+import shutil
+import struct
+import subprocess
+import sys
+import zlib
+
+
+def fail(message):
+    print("fault_sweep: FAIL: " + message)
+    sys.exit(1)
+
+
+def png_whole(path):
+    data = open(path, "rb").read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        return False
+    pos, seen_end = 8, False
+    while pos + 12 <= len(data):
+        (n,) = struct.unpack(">I", data[pos:pos + 4])
+        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]
+        if len(body) != n or pos + 12 + n > len(data):
+            return False
+        (crc,) = struct.unpack(">I", data[pos + 8 + n:pos + 12 + n])
+        if zlib.crc32(kind + body) & 0xFFFFFFFF != crc:
+            return False
+        pos += 12 + n
+        seen_end = kind == b"IEND"
+    return seen_end and pos == len(data)
+
+
+def check_outputs(out_dir):
+    """Returns the problem with the folder's files, or None."""
+    for root, _, files in os.walk(out_dir):
+        for name in files:
+            path = os.path.join(root, name)
+            if name.endswith(".partial") or name.endswith(".tmp"):
+                return path + " is a half-written file left behind"
+            if name.endswith(".png") and not png_whole(path):
+                return path + " is not a whole PNG"
+            if name.endswith(".exr"):
+                head = open(path, "rb").read(8)
+                if head[:4] != b"\x76\x2f\x31\x01" or os.path.getsize(path) < 64:
+                    return path + " is not a whole OpenEXR file"
+    return None
+
+
+def files(out_dir):
+    return sorted(os.path.relpath(os.path.join(root, name), out_dir)
+                  for root, _, names in os.walk(out_dir) for name in names)
+
+
+def run(command, out_dir, fault):
+    shutil.rmtree(out_dir, ignore_errors=True)
+    env = dict(os.environ, ASVGF_FAULT=fault)
+    return subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
+
+
+def main():
+    if len(sys.argv) < 4 or sys.argv[2] != "--":
+        print(__doc__)
+        sys.exit(2)
+    out_dir, command = sys.argv[1], sys.argv[3:]
+    counted = run(command, out_dir, "count")
+    if counted.returncode != 0:
+        fail("the unfaulted run exits %d: %s" % (counted.returncode, counted.stderr.strip()[-400:]))
+    match = re.search(r"fault counts: (.*)", counted.stderr)
+    if not match:
+        fail("the unfaulted run printed no fault counts")
+    counts = [(kind, int(n)) for kind, n in (item.split(" ") for item in match.group(1).split(", "))]
+    complete = files(out_dir)
+    total = after_work = 0
+    for kind, n in counts:
+        late = 0
+        for k in range(1, n + 1):
+            fault = "%s:%d" % (kind, k)
+            r = run(command, out_dir, fault)
+            where = "ASVGF_FAULT=%s %s" % (fault, " ".join(command))
+            problem = check_outputs(out_dir)
+            if problem:
+                fail("%s: %s" % (where, problem))
+            if r.returncode == 0 and files(out_dir) == complete:
+                late += 1  # injected in the teardown, after every output was written
+            elif r.returncode != 1:
+                fail("%s exits %d (want 1, or 0 with every output): %s"
+                     % (where, r.returncode, (r.stderr or r.stdout).strip()[-600:]))
+            elif "injected fault" not in r.stderr:
+                fail("%s: no message names the injected fault: %s" % (where, r.stderr.strip()[-600:]))
+            total += 1
+        after_work += late
+        print("fault_sweep: %s: %d calls, each failing cleanly (%d in the teardown after the work)" % (kind, n, late))
+    print("fault_sweep: ok: %d faulted runs of %s, %d of them after the work was done"
+          % (total, os.path.basename(command[0]), after_work))
+
+
+if __name__ == "__main__":
+    main()
