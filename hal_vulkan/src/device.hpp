@@ -162,6 +162,7 @@ class VulkanDevice final : public hal::Device {
   void read_image(ImageHandle src, std::span<std::byte> out) override;
 
   std::vector<std::optional<double>> read_timers(TimerQueriesHandle timers) override;
+  std::optional<std::uint64_t> device_memory_bytes() const override { return allocator_->device_memory(); }
 
   // ---- Shared with command lists and the presenter ----
   VkDevice device() const { return device_; }

@@ -134,6 +134,7 @@ VkDeviceMemory MemoryAllocator::allocate_memory(VkDeviceSize size, std::uint32_t
     }
     *mapped = static_cast<std::byte*>(pointer);
   }
+  device_memory_ += size;
   return memory;
 }
 
@@ -198,6 +199,7 @@ void MemoryAllocator::free(const Allocation& allocation) {
   if (!allocation.memory) return;
   if (allocation.pool < 0) {
     vkFreeMemory(device_, allocation.memory, nullptr);
+    device_memory_ -= allocation.size;
     return;
   }
   Pool& pool = pools_[static_cast<std::size_t>(allocation.pool)];
@@ -208,6 +210,7 @@ void MemoryAllocator::free(const Allocation& allocation) {
   for (const auto& other : pool.blocks) live += other.memory ? 1 : 0;
   if (block.ranges->empty() && live > 1) {
     vkFreeMemory(device_, block.memory, nullptr);
+    device_memory_ -= block_size_;
     block = Block{};
   }
 }

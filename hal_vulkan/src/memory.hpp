@@ -72,6 +72,8 @@ class MemoryAllocator {
 
   // Size of the largest memory heap, for rejecting impossible requests before asking the driver.
   VkDeviceSize largest_heap() const;
+  // Bytes of VkDeviceMemory allocated now (blocks and dedicated allocations).
+  VkDeviceSize device_memory() const { return device_memory_; }
 
  private:
   struct Block {
@@ -92,6 +94,7 @@ class MemoryAllocator {
   VkDeviceSize block_size_;
   VkPhysicalDeviceMemoryProperties props_{};
   std::vector<Pool> pools_;
+  VkDeviceSize device_memory_ = 0;
 };
 
 }  // namespace hal::vulkan

@@ -107,6 +107,10 @@ class Device {
   // An entry is empty when the device has no timestamps or the region was not recorded: a
   // missing time is never reported as zero.
   virtual std::vector<std::optional<double>> read_timers(TimerQueriesHandle timers) = 0;
+
+  // Bytes of device memory the backend holds now (memory blocks and dedicated allocations, not the
+  // resources in them), for leak checks over long runs; empty when the backend cannot say.
+  virtual std::optional<std::uint64_t> device_memory_bytes() const { return std::nullopt; }
 };
 
 }  // namespace hal

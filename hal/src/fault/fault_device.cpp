@@ -94,6 +94,7 @@ class FaultDevice final : public Device, public DeviceLayer {
     check_lost("timer queries");
     return inner_->read_timers(timers);
   }
+  std::optional<std::uint64_t> device_memory_bytes() const override { return inner_->device_memory_bytes(); }
   Device& inner() override { return *inner_; }
 
  private:

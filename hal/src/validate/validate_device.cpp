@@ -215,6 +215,7 @@ class ValidatingDevice final : public Device, public DeviceLayer {
     check_whole(objects_.images.get(src.id), ImageUsage::CopySrc, "read_image", "got room for", out.size());
     inner_->read_image(src, out);
   }
+  std::optional<std::uint64_t> device_memory_bytes() const override { return inner_->device_memory_bytes(); }
   std::vector<std::optional<double>> read_timers(TimerQueriesHandle timers) override {
     objects_.timers.get(timers.id);
     return inner_->read_timers(timers);
