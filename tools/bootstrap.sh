@@ -20,6 +20,7 @@ packages=(
   libglfw3-dev libglm-dev doctest-dev libstb-dev libtinyobjloader-dev libtinygltf-dev
   libtinyexr-dev nlohmann-json3-dev libcli11-dev
   xvfb xauth
+  clang libclang-rt-14-dev  # tools/fuzz.sh: libFuzzer with ASan and UBSan
 )
 # Node.js and npm only when the machine has none (the WGSL step runs naga and Dawn in Node).
 command -v node >/dev/null 2>&1 || packages+=(nodejs)
