@@ -134,9 +134,18 @@ void App::apply_motion(float seconds) {
 }
 
 void App::resize_hook() {
+  if (frame_ < options_.resize_storm) {
+    // Four sizes, the next one each frame: every frame presents at a size the last one did not.
+    static constexpr std::uint32_t kSizes[4][2] = {{96, 72}, {40, 56}, {128, 32}, {64, 64}};
+    resize_to(kSizes[frame_ % 4][0], kSizes[frame_ % 4][1]);
+    return;
+  }
   if (resized_ || frame_ != options_.resize_frame) return;
   resized_ = true;
-  const auto [w, h] = options_.resize_to;
+  resize_to(options_.resize_to.width, options_.resize_to.height);
+}
+
+void App::resize_to(std::uint32_t w, std::uint32_t h) {
   glfwSetWindowSize(window_, static_cast<int>(w), static_cast<int>(h));
   // The X server applies the size asynchronously: wait (bounded) so the run is reproducible.
   int fw = 0, fh = 0;

@@ -45,6 +45,7 @@ class App {
   void handle_actions();
   void apply_motion(float seconds);
   void resize_hook();
+  void resize_to(std::uint32_t width, std::uint32_t height);  // and wait (bounded) until the X server did
   hal::ImageHandle shown_image() const;
   void present(hal::ImageHandle image);
   void update_title();

@@ -64,6 +64,9 @@ void add_demo_options(CLI::App& app, DemoOptions& o) {
   app.add_option("--resize-at", o.resize_at, "Test hook: resize the window to WxH before frame K")
       ->expected(2)
       ->type_name("K WxH");
+  app.add_option("--resize-storm", o.resize_storm,
+                 "Test hook: resize the window before each of the first N frames, cycling through four sizes")
+      ->check(CLI::Range(0, 100000));
   app.add_flag("--no-vsync", o.no_vsync, "Present without waiting for vertical sync");
   app.footer(kControlsHelp);
 }

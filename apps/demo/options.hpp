@@ -25,6 +25,7 @@ struct DemoOptions {
   std::string screenshot;        // with --frames: PNG of the last frame
   std::string screenshot_dir = ".";  // where P saves
   std::vector<std::string> resize_at;  // test hook: {"K", "WxH"}
+  int resize_storm = 0;                // test hook: resize the window before each of the first N frames
   bool no_vsync = false;
 
   // Parsed from the strings above by finish().

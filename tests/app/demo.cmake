@@ -63,6 +63,17 @@ ${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --backend gl --frames 6 --window 
 ${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --backend gles --frames 8 --size 32x32 --method asvgf --animation light-exit --validation --resize-at 4 96x72 \
 ) 2>&1 | tr '\\n' ' '")
 
+# A resize storm: 50 resizes in 50 frames, each to a size the last frame did not have, with the
+# renderer recreated each time too (--fit-window), and on OpenGL; validation and GL debug output
+# stay silent, and the swapchain (or GL framebuffer) follows every size.
+asvgf_add_cli_test("asvgf-demo survives a storm of 50 resizes with no validation message, on Vulkan and OpenGL" LABEL app EXIT 0
+                   MATCH "52 frames. swapchain created 50 times.*validation messages: 0.*52 frames. swapchain created 50 times.*40x56.*validation messages: 0.*52 frames. framebuffer at 50 sizes.*validation messages: 0"
+                   COMMAND bash -c "set -o pipefail && ( \
+${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 52 --size 32x32 --animation light-exit --validation --resize-storm 50 && \
+${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 52 --window 32x32 --fit-window --method svgf --validation --resize-storm 50 && \
+${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --backend gl --frames 52 --size 32x32 --validation --resize-storm 50 \
+) 2>&1 | grep -v 'window resized' | tr '\\n' ' '")
+
 # The denoiser-state views (heat maps from debug_view.comp) on a frame where the box moves, so the
 # gradient passes run, for each method that has the buffer.
 asvgf_add_cli_test("asvgf-demo shows the gradient, alpha, variance and history views with no validation message" LABEL app EXIT 0
@@ -73,7 +84,8 @@ ${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 6 --size 32x32 --animati
 ${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 6 --size 32x32 --animation boxes-move --validation --view variance --method ema && \
 ${ASVGF_XVFB_RUN} -a $<TARGET_FILE:asvgf-demo> --frames 6 --size 32x32 --animation boxes-move --validation --view history \
 ) 2>&1 | tr '\\n' ' '")
-set_tests_properties("app: asvgf-demo --backend gl and gles present through a GL window: frame 29 equals asvgf render --backend gl, resizes stay silent"
+set_tests_properties("app: asvgf-demo survives a storm of 50 resizes with no validation message, on Vulkan and OpenGL"
+                     "app: asvgf-demo --backend gl and gles present through a GL window: frame 29 equals asvgf render --backend gl, resizes stay silent"
                      "app: asvgf-demo shows the gradient, alpha, variance and history views with no validation message"
                      "app: asvgf-demo --frames 30 --screenshot equals asvgf render frame 29 under validation"
                      "app: asvgf-demo resized at frame 4 recreates the swapchain with no validation message"
