@@ -3,13 +3,13 @@
 # UBSan) into build-fuzz/ and runs each for SECONDS (default 60) on a copy of its seed corpus in
 # tests/fuzz/corpus/<target>/. A crash, leak or sanitizer report stops the run, leaves the input in
 # build-fuzz/findings/<target>/ and exits 1; make it a regression test (tests/data/fuzz_regressions/).
-# Targets: scene_json obj gltf image (default: all).
+# Targets: scene_json obj gltf image reflection (default: all).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scene_json obj gltf image)
+[ ${#targets[@]} -eq 0 ] && targets=(scene_json obj gltf image reflection)
 if ! command -v clang++ >/dev/null; then
   echo "tools/fuzz.sh: clang++ not found (tools/bootstrap.sh installs clang and libclang-rt-14-dev)" >&2
   exit 1

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "copy_bandwidth.hpp"
 #include "graph/pass_traffic.hpp"
+#include "report/sequence_metrics.hpp"
 #include "scene_options.hpp"
 
 namespace asvgf::cli {
@@ -35,11 +36,7 @@ struct Floor {
   bool counted = true;  // false: the pass also reads scene buffers of unknown size: the floor is low
 };
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
+using report::median;
 
 int run_bench(BenchOptions& o) {
   finish_scene_options(o.scene);

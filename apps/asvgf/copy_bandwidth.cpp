@@ -1,9 +1,9 @@
 #include "copy_bandwidth.hpp"
 
-#include <algorithm>
 #include <span>
 #include <vector>
 
+#include "report/sequence_metrics.hpp"
 #include "shaders/bandwidth_copy.hpp"
 
 namespace asvgf::cli {
@@ -55,10 +55,9 @@ std::optional<CopyBandwidth> measure_copy_bandwidth(hal::Device& device, std::ui
   device.destroy(dst);
   device.destroy(src);
   if (ms.empty()) return std::nullopt;
-  std::sort(ms.begin(), ms.end());
   CopyBandwidth b;
   b.bytes = bytes;
-  b.median_ms = ms[ms.size() / 2];
+  b.median_ms = report::median(ms);
   b.bytes_per_second = 2.0 * static_cast<double>(bytes) / (b.median_ms * 1e-3);
   return b;
 }

@@ -1,5 +1,6 @@
 // scene/gltf_import.cpp: glTF 2.0 (.gltf, .glb) through tinygltf (the shared libtinygltf, so no
 // TINYGLTF_IMPLEMENTATION here), merged into one mesh with node transforms applied.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -21,6 +22,25 @@
 namespace asvgf::scene::detail {
 
 namespace {
+
+// tinygltf would decode images with Debian's libstb (stb_image 2.27, unchecked); decode_image
+// refuses first what that version mishandles (scene/image.cpp).
+bool decode_gltf_image(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
+                       const unsigned char* bytes, int size, void*) {
+  try {
+    Texture tex = decode_image(bytes, static_cast<std::size_t>(std::max(size, 0)), "image " + std::to_string(index) + ": ");
+    image->width = static_cast<int>(tex.width);
+    image->height = static_cast<int>(tex.height);
+    image->component = 4;
+    image->bits = 8;
+    image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image->image = std::move(tex.rgba8);
+    return true;
+  } catch (const SceneError& e) {
+    if (err) *err += e.what();
+    return false;
+  }
+}
 
 struct Importer {
   const tinygltf::Model& model;
@@ -263,6 +283,7 @@ ImportedMesh import_gltf(const std::filesystem::path& file, const std::string& w
   if (!std::filesystem::is_regular_file(file, ec)) throw SceneError(prefix + "no such file");
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&decode_gltf_image, nullptr);
   std::string err, warn;
   const bool binary = file.extension() == ".glb" || file.extension() == ".GLB";
   const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, file.string())

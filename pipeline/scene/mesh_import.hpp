@@ -29,5 +29,8 @@ ImportedMesh import_gltf(const std::filesystem::path& file, const std::string& w
 
 // PNG/JPG/... through stb_image, as RGBA8.
 Texture load_image(const std::filesystem::path& file, const std::string& where);
+// The same from bytes in memory (glTF's embedded and referenced images); errors start with `prefix`.
+// The returned texture has no name.
+Texture decode_image(const unsigned char* data, std::size_t size, const std::string& prefix);
 
 }  // namespace asvgf::scene::detail

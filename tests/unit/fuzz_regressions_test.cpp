@@ -50,3 +50,22 @@ TEST_CASE("a PNG whose chunk claims more bytes than the file holds is refused be
                        doctest::Contains("PNG chunk at byte 64 claims 1162757294 bytes but the file has 0 left"),
                        asvgf::scene::SceneError);
 }
+
+TEST_CASE("a JPEG Huffman table with more than 256 codes is refused before stb_image overruns its tables") {
+  // stb_image 2.27 wrote past its 257-entry Huffman tables on this 47-byte file (tools/fuzz.sh, UBSan):
+  // its DHT segment's 16 counts are 0x8b each, 2224 codes.
+  const fs::path input = fs::path(__FILE__).parent_path().parent_path() / "data" / "fuzz_regressions" / "image" /
+                         "jpeg_huffman_table_over_256_codes.jpg";
+  CHECK_THROWS_WITH_AS(asvgf::scene::detail::load_image(input, "regression"),
+                       doctest::Contains("JPEG Huffman table at byte 6 has 2224 codes (at most 256)"),
+                       asvgf::scene::SceneError);
+}
+
+TEST_CASE("glTF images go through the same checks: an embedded JPEG with an overlong Huffman table is refused") {
+  // tinygltf would hand this image to Debian's libstb unchecked; import_gltf decodes through decode_image.
+  const fs::path input = fs::path(__FILE__).parent_path().parent_path() / "data" / "fuzz_regressions" / "gltf" /
+                         "embedded_jpeg_huffman_table_over_256_codes.gltf";
+  CHECK_THROWS_WITH_AS(asvgf::scene::detail::import_gltf(input, "regression"),
+                       doctest::Contains("image 0: JPEG Huffman table at byte 6 has 2224 codes (at most 256)"),
+                       asvgf::scene::SceneError);
+}
