@@ -3,7 +3,8 @@
 # UBSan) into build-fuzz/ and runs each for SECONDS (default 60) on a copy of its seed corpus in
 # tests/fuzz/corpus/<target>/. A crash, leak or sanitizer report stops the run, leaves the input in
 # build-fuzz/findings/<target>/ and exits 1; make it a regression test (tests/data/fuzz_regressions/).
-# Targets: scene_json obj gltf image reflection (default: all).
+# Targets: scene_json obj gltf image reflection (default: all). ASVGF_FUZZ_SEED=N fixes libFuzzer's
+# random seed (CI does, so that a red run replays); unset, each run explores differently.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds="${1:-60}"
@@ -24,7 +25,7 @@ for t in "${targets[@]}"; do
   cp -n tests/fuzz/corpus/"$t"/* "$corpus"/ 2>/dev/null || true
   echo "fuzz: $t for ${seconds} s"
   if ! ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:suppressions=tests/fuzz/ubsan.supp \
-      "build-fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+      "build-fuzz/fuzz_$t" -max_total_time="$seconds" -seed="${ASVGF_FUZZ_SEED:-0}" -timeout=10 -rss_limit_mb=2048 \
       -artifact_prefix="$findings/" -print_final_stats=1 "$corpus" 2>"build-fuzz/$t.log"; then
     echo "fuzz: $t FOUND a problem: see build-fuzz/$t.log and $findings/" >&2
     status=1
