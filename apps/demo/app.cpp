@@ -138,11 +138,38 @@ void App::resize_hook() {
     // Four sizes, the next one each frame: every frame presents at a size the last one did not.
     static constexpr std::uint32_t kSizes[4][2] = {{96, 72}, {40, 56}, {128, 32}, {64, 64}};
     resize_to(kSizes[frame_ % 4][0], kSizes[frame_ % 4][1]);
+    visibility_hook();
     return;
   }
   if (resized_ || frame_ != options_.resize_frame) return;
   resized_ = true;
   resize_to(options_.resize_to.width, options_.resize_to.height);
+}
+
+void App::visibility_hook() {
+  if (hidden_) {
+    glfwShowWindow(window_);
+    hidden_ = false;
+  }
+  if (frame_ % 10 != 5) return;
+  // Every tenth frame of the storm: minimise and restore (without a window manager, as under Xvfb,
+  // nothing happens and the summary says so), then hide the window so that this frame presents
+  // to an unmapped window; the next frame shows it again.
+  auto settle = [&](auto done) {
+    for (int tries = 0; tries < 50 && !done(); ++tries) {
+      glfwPollEvents();
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  };
+  glfwIconifyWindow(window_);
+  settle([&] { return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE; });
+  if (glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE) ++minimised_;
+  glfwRestoreWindow(window_);
+  settle([&] { return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_FALSE; });
+  glfwHideWindow(window_);
+  settle([&] { return glfwGetWindowAttrib(window_, GLFW_VISIBLE) == GLFW_FALSE; });
+  hidden_ = true;
+  ++hides_;
 }
 
 void App::resize_to(std::uint32_t w, std::uint32_t h) {
@@ -242,7 +269,12 @@ int App::run() {
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (fps_.fps() == 0.0 && seconds > 0.0) fps_.set(frame_ / seconds);
   update_title();
-  std::printf("asvgf-demo: %d frames; %s; last frame: %s\n", frame_, presenter_->history().c_str(), title_.c_str());
+  std::string storm;
+  if (options_.resize_storm > 0)
+    storm = "; presented hidden " + std::to_string(hides_) + " times, minimised " + std::to_string(minimised_) +
+            " times (needs a window manager)";
+  std::printf("asvgf-demo: %d frames; %s%s; last frame: %s\n", frame_, presenter_->history().c_str(), storm.c_str(),
+              title_.c_str());
   return 0;
 }
 

@@ -45,6 +45,7 @@ class App {
   void handle_actions();
   void apply_motion(float seconds);
   void resize_hook();
+  void visibility_hook();  // the resize storm's minimise/restore and hide/show
   void resize_to(std::uint32_t width, std::uint32_t height);  // and wait (bounded) until the X server did
   hal::ImageHandle shown_image() const;
   void present(hal::ImageHandle image);
@@ -68,7 +69,8 @@ class App {
   int still_frames_ = 0;  // frames since something last moved (the reference's accumulation)
   std::optional<scene::FrameState> last_state_;
   std::string title_;
-  bool quit_ = false, resized_ = false, screenshot_requested_ = false;
+  bool quit_ = false, resized_ = false, screenshot_requested_ = false, hidden_ = false;
+  int hides_ = 0, minimised_ = 0;  // by the resize storm
 };
 
 }  // namespace asvgf::demo

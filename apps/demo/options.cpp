@@ -65,7 +65,8 @@ void add_demo_options(CLI::App& app, DemoOptions& o) {
       ->expected(2)
       ->type_name("K WxH");
   app.add_option("--resize-storm", o.resize_storm,
-                 "Test hook: resize the window before each of the first N frames, cycling through four sizes")
+                 "Test hook: resize the window before each of the first N frames, cycling through four sizes; "
+                 "every tenth of them also minimises, restores and hides the window for one frame")
       ->check(CLI::Range(0, 100000));
   app.add_flag("--no-vsync", o.no_vsync, "Present without waiting for vertical sync");
   app.footer(kControlsHelp);
