@@ -23,6 +23,9 @@ import struct
 import sys
 import zlib
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from png_chunks import png_chunks  # noqa: E402
+
 ERROR_COLUMNS = ["relmse", "ssim", "temporal", "mean", "reference_mean"]
 
 
@@ -44,23 +47,12 @@ def read_csv(directory):
 
 def decode_png(path):
     """Returns (width, height, set of distinct pixels); fails on anything but a valid 8-bit PNG."""
-    data = open(path, "rb").read()
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
-        fail(path + ": no PNG signature")
-    pos, idat, ihdr = 8, b"", None
-    while pos < len(data):
-        if pos + 8 > len(data):
-            fail(path + ": truncated chunk")
-        (n,) = struct.unpack(">I", data[pos:pos + 4])
-        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]
-        (crc,) = struct.unpack(">I", data[pos + 8 + n:pos + 12 + n])
-        if zlib.crc32(kind + body) & 0xFFFFFFFF != crc:
-            fail(path + ": bad CRC in " + kind.decode("latin-1"))
-        if kind == b"IHDR":
-            ihdr = struct.unpack(">IIBBBBB", body)
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + n
+    try:
+        chunks = png_chunks(open(path, "rb").read())
+    except ValueError as e:
+        fail(path + ": " + str(e))
+    ihdr = next((struct.unpack(">IIBBBBB", body) for kind, body in chunks if kind == b"IHDR"), None)
+    idat = b"".join(body for kind, body in chunks if kind == b"IDAT")
     if ihdr is None:
         fail(path + ": no IHDR")
     w, h, depth, colour = ihdr[:4]

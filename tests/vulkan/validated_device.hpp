@@ -29,13 +29,8 @@ struct ValidatedDevice {
   explicit ValidatedDevice(hal::vulkan::DeviceOptions options = {}) {
 #if defined(ASVGF_TEST_BACKEND_WEBGPU)
     (void)options;
-    hal::dawn_node::DeviceOptions dawn;
-    dawn.node = ASVGF_TEST_NODE;
-    dawn.server = ASVGF_TEST_WEBGPU_SERVER;
-    dawn.node_modules = ASVGF_TEST_NODE_MODULES;
-    dawn.shader_dir = ASVGF_TEST_SHADER_DIR;
-    dawn.on_message = [this](const std::string& m) { messages.push_back(m); };
-    device = hal::validate::wrap(hal::dawn_node::create_device(dawn));
+    device = hal::validate::wrap(hal::dawn_node::create_device(
+        hal::dawn_node::build_options([this](const std::string& m) { messages.push_back(m); })));
 #elif defined(ASVGF_TEST_BACKEND_GL)
     (void)options;
     hal::gl::DeviceOptions gl;

@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "hal/device.hpp"
 
@@ -26,5 +27,19 @@ struct DeviceOptions {
 
 // Starts the server and opens its adapter. Throws hal::Error(NoDevice) when Node or Dawn cannot start.
 std::unique_ptr<hal::Device> create_device(const DeviceOptions& options);
+
+#if defined(ASVGF_TEST_NODE)
+// The options of this build: the test targets define where Node, the server, the npm packages and
+// the shaders are.
+inline DeviceOptions build_options(std::function<void(const std::string&)> on_message) {
+  DeviceOptions options;
+  options.node = ASVGF_TEST_NODE;
+  options.server = ASVGF_TEST_WEBGPU_SERVER;
+  options.node_modules = ASVGF_TEST_NODE_MODULES;
+  options.shader_dir = ASVGF_TEST_SHADER_DIR;
+  options.on_message = std::move(on_message);
+  return options;
+}
+#endif
 
 }  // namespace hal::dawn_node

@@ -20,13 +20,8 @@ namespace {
 
 // The Dawn device of the build's shaders; its validation errors go to `messages`.
 std::unique_ptr<hal::Device> open_dawn(std::vector<std::string>& messages) {
-  hal::dawn_node::DeviceOptions options;
-  options.node = ASVGF_TEST_NODE;
-  options.server = ASVGF_TEST_WEBGPU_SERVER;
-  options.node_modules = ASVGF_TEST_NODE_MODULES;
-  options.shader_dir = ASVGF_TEST_SHADER_DIR;
-  options.on_message = [&messages](const std::string& m) { messages.push_back(m); };
-  return hal::validate::wrap(hal::dawn_node::create_device(options));
+  return hal::validate::wrap(hal::dawn_node::create_device(
+      hal::dawn_node::build_options([&messages](const std::string& m) { messages.push_back(m); })));
 }
 
 }  // namespace
