@@ -53,15 +53,26 @@ void check_png_chunks(const std::vector<unsigned char>& bytes, const std::string
   }
 }
 
-// stb_image 2.27 (Debian 12) builds a JPEG Huffman table from a DHT segment's 16 code-length
-// counts without checking that they total at most 256 symbols; more write past its 257-entry tables
-// (found by tools/fuzz.sh, tests/data/fuzz_regressions/image/). Walk the markers as stb_image reads
-// them (bytes between markers skipped, 0xFF00 stuffing and restart markers inside scans) and refuse
-// such a table. stb_image reads a table's counts even past the segment's end, so this does too.
+// stb_image 2.27 (Debian 12) trusts a JPEG's Huffman tables (found by tools/fuzz.sh, kept in
+// tests/data/fuzz_regressions/image/): a DHT segment's 16 code-length counts may total more than
+// 256 symbols, which writes past its 257-entry tables, and a scan may use a table no DHT segment
+// defined, which decodes with uninitialised memory. Walk the markers as stb_image reads them (fill
+// bytes skipped, 0xFF00 stuffing and restart markers inside scans) and refuse both. stb_image reads
+// a table's counts even past the segment's end (as zeros past the file's), so this does too.
 void check_jpeg_huffman_tables(const std::vector<unsigned char>& bytes, const std::string& prefix) {
-  if (bytes.size() < 2 || bytes[0] != 0xFF || bytes[1] != 0xD8) return;                        // not a JPEG
+  // SOI as stb_image finds it: 0xFF, any number of 0xFF fill bytes, 0xD8.
+  std::size_t at = 1;
+  while (at < bytes.size() && bytes[at] == 0xFF) ++at;
+  if (bytes.empty() || bytes[0] != 0xFF || at >= bytes.size() || bytes[at] != 0xD8) return;  // not a JPEG
+  ++at;
   auto byte_at = [&](std::size_t i) -> unsigned { return i < bytes.size() ? bytes[i] : 0u; };  // 0 past the end, as stb
-  std::size_t at = 2;
+  bool defined[2][4] = {};  // [0: DC, 1: AC][table id]
+  bool progressive = false;
+  auto require = [&](std::size_t scan, unsigned ac, unsigned id) {
+    if (id <= 3 && !defined[ac][id])  // ids above 3 stb_image refuses itself
+      throw SceneError(prefix + "JPEG scan at byte " + std::to_string(scan) + " uses " + (ac ? "AC" : "DC") +
+                       " Huffman table " + std::to_string(id) + ", which no DHT segment before it defines");
+  };
   while (at + 1 < bytes.size()) {
     const unsigned marker = bytes[at + 1];
     if (bytes[at] != 0xFF || marker == 0xFF) {  // entropy-coded data, junk or fill bytes
@@ -74,6 +85,7 @@ void check_jpeg_huffman_tables(const std::vector<unsigned char>& bytes, const st
       continue;
     }
     const std::size_t length = (byte_at(at + 2) << 8) | byte_at(at + 3);
+    if (marker == 0xC2) progressive = true;
     if (marker == 0xC4) {
       std::size_t table = at + 4;
       for (long left = static_cast<long>(length) - 2; left > 0;) {
@@ -82,8 +94,21 @@ void check_jpeg_huffman_tables(const std::vector<unsigned char>& bytes, const st
         if (symbols > 256)
           throw SceneError(prefix + "JPEG Huffman table at byte " + std::to_string(table) + " has " +
                            std::to_string(symbols) + " codes (at most 256)");
+        const unsigned kind = byte_at(table) >> 4, id = byte_at(table) & 15u;
+        if (kind <= 1 && id <= 3) defined[kind][id] = true;
         table += 17 + symbols;
         left -= static_cast<long>(17 + symbols);
+      }
+    }
+    if (marker == 0xDA) {
+      // Which tables stb_image decodes with: baseline, both per component; progressive, the DC
+      // table in a first DC scan (Ss = 0, Ah = 0), none in a DC refinement, the AC table otherwise.
+      const unsigned components = byte_at(at + 4);
+      const unsigned ss = byte_at(at + 5 + 2 * components), ah = byte_at(at + 7 + 2 * components) >> 4;
+      for (unsigned c = 0; c < components; ++c) {
+        const unsigned tables = byte_at(at + 6 + 2 * c);
+        if (!progressive || (ss == 0 && ah == 0)) require(at, 0, tables >> 4);
+        if (!progressive || ss != 0) require(at, 1, tables & 15u);
       }
     }
     at += 2 + std::max<std::size_t>(length, 2);

@@ -59,6 +59,21 @@ TEST_CASE("a JPEG Huffman table with more than 256 codes is refused before stb_i
   CHECK_THROWS_WITH_AS(asvgf::scene::detail::load_image(input, "regression"),
                        doctest::Contains("JPEG Huffman table at byte 6 has 2224 codes (at most 256)"),
                        asvgf::scene::SceneError);
+  // The same overrun behind 0xFF fill bytes before the start-of-image marker, which stb_image skips.
+  CHECK_THROWS_WITH_AS(asvgf::scene::detail::load_image(input.parent_path() / "jpeg_fill_bytes_before_soi_huffman_overrun.jpg",
+                                                        "regression"),
+                       doctest::Contains("JPEG Huffman table at byte 115 has 964 codes (at most 256)"),
+                       asvgf::scene::SceneError);
+}
+
+TEST_CASE("a JPEG scan that uses a Huffman table no DHT segment defined is refused before stb_image decodes it") {
+  // stb_image 2.27 decoded this progressive file's first DC scan with DC table 3, never defined:
+  // uninitialised memory, an index of -11198258 into a 257-entry table (tools/fuzz.sh, UBSan).
+  const fs::path input = fs::path(__FILE__).parent_path().parent_path() / "data" / "fuzz_regressions" / "image" /
+                         "jpeg_scan_uses_undefined_huffman_table.jpg";
+  CHECK_THROWS_WITH_AS(asvgf::scene::detail::load_image(input, "regression"),
+                       doctest::Contains("JPEG scan at byte 356 uses DC Huffman table 3, which no DHT segment before it defines"),
+                       asvgf::scene::SceneError);
 }
 
 TEST_CASE("glTF images go through the same checks: an embedded JPEG with an overlong Huffman table is refused") {
