@@ -42,38 +42,30 @@ TEST_CASE("every fuzz regression input loads or fails with a clean error") {
   CHECK(inputs >= 2);
 }
 
-TEST_CASE("a PNG whose chunk claims more bytes than the file holds is refused before decoding") {
-  // stb_image asked for 2 GiB on this 76-byte file (tools/fuzz.sh found it): its last chunk claims 1.1 GB.
-  const fs::path input = fs::path(__FILE__).parent_path().parent_path() / "data" / "fuzz_regressions" / "image" /
-                         "png_chunk_claims_2gib.png";
-  CHECK_THROWS_WITH_AS(asvgf::scene::detail::load_image(input, "regression"),
-                       doctest::Contains("PNG chunk at byte 64 claims 1162757294 bytes but the file has 0 left"),
-                       asvgf::scene::SceneError);
-}
-
-TEST_CASE("a JPEG Huffman table with more than 256 codes is refused before stb_image overruns its tables") {
-  // stb_image 2.27 wrote past its 257-entry Huffman tables on this 47-byte file (tools/fuzz.sh, UBSan):
-  // its DHT segment's 16 counts are 0x8b each, 2224 codes.
-  const fs::path input = fs::path(__FILE__).parent_path().parent_path() / "data" / "fuzz_regressions" / "image" /
-                         "jpeg_huffman_table_over_256_codes.jpg";
-  CHECK_THROWS_WITH_AS(asvgf::scene::detail::load_image(input, "regression"),
-                       doctest::Contains("JPEG Huffman table at byte 6 has 2224 codes (at most 256)"),
-                       asvgf::scene::SceneError);
-  // The same overrun behind 0xFF fill bytes before the start-of-image marker, which stb_image skips.
-  CHECK_THROWS_WITH_AS(asvgf::scene::detail::load_image(input.parent_path() / "jpeg_fill_bytes_before_soi_huffman_overrun.jpg",
-                                                        "regression"),
-                       doctest::Contains("JPEG Huffman table at byte 115 has 964 codes (at most 256)"),
-                       asvgf::scene::SceneError);
-}
-
-TEST_CASE("a JPEG scan that uses a Huffman table no DHT segment defined is refused before stb_image decodes it") {
-  // stb_image 2.27 decoded this progressive file's first DC scan with DC table 3, never defined:
-  // uninitialised memory, an index of -11198258 into a 257-entry table (tools/fuzz.sh, UBSan).
-  const fs::path input = fs::path(__FILE__).parent_path().parent_path() / "data" / "fuzz_regressions" / "image" /
-                         "jpeg_scan_uses_undefined_huffman_table.jpg";
-  CHECK_THROWS_WITH_AS(asvgf::scene::detail::load_image(input, "regression"),
-                       doctest::Contains("JPEG scan at byte 356 uses DC Huffman table 3, which no DHT segment before it defines"),
-                       asvgf::scene::SceneError);
+// Each image finding, refused before stb_image (2.27, Debian 12) mishandles it, with the reason.
+TEST_CASE("every image the fuzzers found stb_image mishandling is refused before decoding, naming why") {
+  struct Finding {
+    const char* file;
+    const char* why;  // how stb_image failed on it
+    const char* message;
+  };
+  const Finding findings[] = {
+      {"png_chunk_claims_2gib.png", "76 bytes whose last chunk claims 1.1 GB: stb_image allocated 2 GiB",
+       "PNG chunk at byte 64 claims 1162757294 bytes but the file has 0 left"},
+      {"jpeg_huffman_table_over_256_codes.jpg", "DHT counts of 0x8b each: writes past the 257-entry tables",
+       "JPEG Huffman table at byte 6 has 2224 codes (at most 256)"},
+      {"jpeg_fill_bytes_before_soi_huffman_overrun.jpg", "the same behind 0xFF fill bytes before the start marker",
+       "JPEG Huffman table at byte 115 has 964 codes (at most 256)"},
+      {"jpeg_scan_uses_undefined_huffman_table.jpg", "a DC scan with table 3, never defined: uninitialised memory",
+       "JPEG scan at byte 356 uses DC Huffman table 3, which no DHT segment before it defines"},
+  };
+  const fs::path dir = fs::path(__FILE__).parent_path().parent_path() / "data" / "fuzz_regressions" / "image";
+  for (const Finding& f : findings) {
+    CAPTURE(f.file);
+    CAPTURE(f.why);
+    CHECK_THROWS_WITH_AS(asvgf::scene::detail::load_image(dir / f.file, "regression"), doctest::Contains(f.message),
+                         asvgf::scene::SceneError);
+  }
 }
 
 TEST_CASE("glTF images go through the same checks: an embedded JPEG with an overlong Huffman table is refused") {
