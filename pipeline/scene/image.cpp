@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "scene/mesh_import.hpp"
@@ -39,7 +40,7 @@ std::uint32_t big_endian32(const unsigned char* p) {
 // stb_image allocates what a PNG chunk's length field claims before reading it: a 76-byte file
 // asked for 2 GiB (found by tools/fuzz.sh, tests/data/fuzz_regressions/image/). Every chunk must fit
 // in the file.
-void check_png_chunks(const std::vector<unsigned char>& bytes, const std::string& prefix) {
+void check_png_chunks(std::span<const unsigned char> bytes, const std::string& prefix) {
   static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (bytes.size() < 8 || std::memcmp(bytes.data(), kSignature, 8) != 0) return;  // not a PNG
   std::size_t at = 8;
@@ -59,7 +60,7 @@ void check_png_chunks(const std::vector<unsigned char>& bytes, const std::string
 // defined, which decodes with uninitialised memory. Walk the markers as stb_image reads them (fill
 // bytes skipped, 0xFF00 stuffing and restart markers inside scans) and refuse both. stb_image reads
 // a table's counts even past the segment's end (as zeros past the file's), so this does too.
-void check_jpeg_huffman_tables(const std::vector<unsigned char>& bytes, const std::string& prefix) {
+void check_jpeg_huffman_tables(std::span<const unsigned char> bytes, const std::string& prefix) {
   // SOI as stb_image finds it: 0xFF, any number of 0xFF fill bytes, 0xD8.
   std::size_t at = 1;
   while (at < bytes.size() && bytes[at] == 0xFF) ++at;
@@ -119,7 +120,7 @@ void check_jpeg_huffman_tables(const std::vector<unsigned char>& bytes, const st
 
 Texture decode_image(const unsigned char* data, std::size_t size, const std::string& prefix) {
   if (size == 0) throw SceneError(prefix + "cannot read image (no data)");
-  const std::vector<unsigned char> bytes(data, data + size);
+  const std::span<const unsigned char> bytes(data, size);  // checked in place, not copied
   check_png_chunks(bytes, prefix);
   check_jpeg_huffman_tables(bytes, prefix);
   const int stb_size = static_cast<int>(std::min<std::size_t>(size, std::numeric_limits<int>::max()));
