@@ -46,6 +46,10 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--max-bounces", o.max_bounces, "Path length after the primary hit")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
+  add_denoise_options(cmd, o);
+}
+
+void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
   auto& d = o.denoise;
   cmd.add_option("--alpha", d.alpha, "Temporal blend factor (SVGF 0.2)")->check(CLI::Range(0.001, 1.0))->capture_default_str();
   cmd.add_option("--moments-alpha", d.moments_alpha, "Moments blend factor (SVGF 0.2)")

@@ -1,35 +1,13 @@
-// passes/denoise_settings.hpp: the denoiser's parameters with their defaults and sources.
-//
-// Defaults (sources; the numbers are in ../shared/DESIGN.md "Numbers from the anchors"):
-//   alpha 0.2, moments_alpha 0.2, atrous_iterations 5, sigma_z 1, sigma_n 128, sigma_l 4, B3-spline
-//   kernel, history_tap 0, min_history 4: SVGF paper (Schied et al. 2017) and Falcor's SVGF pass.
-//   gradient_iterations 3: Q2RTX (a-trous over the gradient at 1/3 resolution).
-//   history_cap 32: Falcor's SVGF (Q2RTX caps at 256 with alpha_min 0.02, moments alpha 0.01).
-//   adaptive on: A-SVGF (Schied, Peters, Dachsbacher 2018).
+// passes/denoise_settings.hpp: the denoiser's parameters, defined in the public header
+// include/asvgf/denoise_settings.hpp and named here as the passes use them.
 #pragma once
 
-#include <cstdint>
+#include "asvgf/denoise_settings.hpp"
 
 namespace asvgf::passes {
 
-enum class AtrousKernel : std::uint32_t { B3Spline = 0, Box = 1 };  // values are the shader's `kernel`
-enum class Tonemap : std::uint32_t { Clamp = 0, Aces = 1 };          // values are the shader's `tonemap`
-
-struct DenoiseSettings {
-  float alpha = 0.2f;                          // colour blend factor (SVGF; the seed's figures use 0.2)
-  float moments_alpha = 0.2f;                  // moments blend factor (SVGF)
-  int atrous_iterations = 5;                   // SVGF
-  float sigma_z = 1.0f;                        // depth edge-stopping (SVGF)
-  float sigma_n = 128.0f;                      // normal edge-stopping exponent (SVGF; Q2RTX 64)
-  float sigma_l = 4.0f;                        // luminance edge-stopping (SVGF; Q2RTX 16)
-  AtrousKernel kernel = AtrousKernel::B3Spline;  // 5x5 B3 spline (SVGF); Box = the seed's 3x3 box
-  int gradient_iterations = 3;                 // a-trous iterations over the 1/3-res gradient (Q2RTX)
-  float history_cap = 32.0f;                   // max history length (Falcor SVGF; Q2RTX 256)
-  int history_tap = 0;                         // a-trous iteration whose output feeds the colour history (SVGF)
-  bool adaptive = true;                        // A-SVGF's gradient-driven alpha; false: constant alpha
-  float min_history = 4.0f;                    // below this, variance is estimated spatially (SVGF)
-  float exposure = 1.0f;                       // composite: multiplier before the tone curve
-  Tonemap tonemap = Tonemap::Aces;             // composite: ACES fit (Narkowicz 2015)
-};
+using asvgf::AtrousKernel;
+using asvgf::DenoiseSettings;
+using asvgf::Tonemap;
 
 }  // namespace asvgf::passes

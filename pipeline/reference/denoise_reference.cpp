@@ -17,6 +17,41 @@ int clampi(int v, int lo, int hi) { return std::min(std::max(v, lo), hi); }
 
 }  // namespace
 
+ImageD pack_surface(const ImageD& depth, const ImageD& normal, bool depth_gradient_given) {
+  const int w = depth.width, h = depth.height;
+  ImageD out(w, h, 4);
+  auto depth_at = [&](int x, int y) {
+    if (!depth.inside(x, y)) return 0.0;
+    const double z = depth.at(x, y, 0);
+    return std::isfinite(z) && z > 0 ? z : 0.0;
+  };
+  // The smaller difference to a neighbour along the axis that is not background; 0 if neither is.
+  auto axis_gradient = [&](int x, int y, int ax, int ay, double z) {
+    const double a = depth_at(x - ax, y - ay), b = depth_at(x + ax, y + ay);
+    double g = -1;
+    if (a > 0) g = std::abs(a - z);
+    if (b > 0) g = g < 0 ? std::abs(b - z) : std::min(g, std::abs(b - z));
+    return std::max(g, 0.0);
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double z = depth.at(x, y, 0);
+      const std::array<double, 3> n{normal.at(x, y, 0), normal.at(x, y, 1), normal.at(x, y, 2)};
+      const double l1 = std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]);
+      if (!(std::isfinite(z) && z > 0) || any_not_finite(n[0], n[1], n[2]) || !(l1 >= 1e-30 && std::isfinite(l1)))
+        continue;
+      double dz = depth.at(x, y, 1);
+      if (!depth_gradient_given || !std::isfinite(dz) || dz < 0)
+        dz = std::max(axis_gradient(x, y, 1, 0, z), axis_gradient(x, y, 0, 1, z));
+      const auto e = oct_encode(n);
+      out.at(x, y, 0) = z;
+      out.at(x, y, 1) = dz;
+      out.at(x, y, 2) = e[0];
+      out.at(x, y, 3) = e[1];
+    }
+  return out;
+}
+
 ImageD gradient(const ImageD& illumination, const ImageD& gradient_prev) {
   const int w = illumination.width, h = illumination.height;
   ImageD out((w + 2) / 3, (h + 2) / 3, 4);

@@ -13,6 +13,10 @@
 
 namespace asvgf::reference {
 
+// pack_surface.comp: depth (x linear depth, y its gradient when `depth_gradient_given`) and normal
+// (xyz) as depth_normal (z, dz, octahedral normal), all zero on background.
+ImageD pack_surface(const ImageD& depth, const ImageD& normal, bool depth_gradient_given);
+
 // gradient.comp: (delta, Delta) per 3x3 stratum, ceil(w/3) x ceil(h/3).
 ImageD gradient(const ImageD& illumination, const ImageD& gradient_prev);
 

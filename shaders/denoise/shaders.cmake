@@ -5,3 +5,4 @@ asvgf_add_shader(temporal SOURCE denoise/temporal.comp VARIANTS constant adaptiv
 asvgf_add_shader(variance SOURCE denoise/variance.comp)
 asvgf_add_shader(atrous SOURCE denoise/atrous.comp VARIANTS plain history=HISTORY)
 asvgf_add_shader(composite SOURCE denoise/composite.comp)
+asvgf_add_shader(pack_surface SOURCE denoise/pack_surface.comp)

@@ -16,6 +16,7 @@
 #include "passes/composite.hpp"
 #include "passes/gradient.hpp"
 #include "passes/gradient_atrous.hpp"
+#include "passes/pack_surface.hpp"
 #include "passes/temporal.hpp"
 #include "passes/variance.hpp"
 #include "reference/denoise_reference.hpp"
@@ -40,6 +41,63 @@ auto fp32_tolerance(double magnitude) {
 }
 
 }  // namespace
+
+TEST_CASE("denoise passes: pack_surface matches the CPU reference; bad depths and normals become background") {
+  ValidatedDevice device;
+  passes::PipelineCache pipelines(*device);
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (const auto& size : kSizes)
+    for (const bool given : {false, true}) {
+      const int w = size[0], h = size[1];
+      CAPTURE(w);
+      CAPTURE(h);
+      CAPTURE(given);
+      Random r(23u + static_cast<std::uint32_t>(w));
+      ImageD depth(w, h, 2), normal(w, h, 3);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const double step = (x / 4 + y / 3) % 3 == 0 ? 2.0 : 0.0;  // silhouettes
+          depth.at(x, y, 0) = r.chance(0.07) ? 0.0 : 2.0 + 0.05 * x + 0.02 * y + step;
+          depth.at(x, y, 1) = r.uniform(0, 0.1);
+          for (int c = 0; c < 3; ++c) normal.at(x, y, c) = r.uniform(-2, 2);  // any length
+        }
+      // Each way an input can be unusable, and a given gradient that is not (the estimate is used).
+      depth.at(0, 0, 0) = nan;
+      depth.at(1, 0, 0) = -3.0;
+      depth.at(2, 0, 0) = inf;
+      normal.at(3, 0, 1) = nan;
+      normal.at(4, 0, 0) = normal.at(4, 0, 1) = normal.at(4, 0, 2) = 0.0;
+      normal.at(0, 1, 2) = inf;
+      depth.at(1, 1, 0) = 5.0, depth.at(1, 1, 1) = nan;
+      depth.at(2, 1, 0) = 5.0, depth.at(2, 1, 1) = -1.0;
+      GraphHarness harness(*device);
+      RenderGraph g;
+      const auto d = harness.input(g, "depth", depth, F::RG32F);
+      const auto n = harness.input(g, "normal", normal, F::RGBA32F);
+      const auto out = g.add_image("depth_normal", static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h), F::RGBA32F);
+      passes::add_pack_surface(g, pipelines, {d, n, out}, given);
+      ImageD got;
+      harness.readback(g, out, &got);
+      harness.run(g);
+      const ImageD want = ref::pack_surface(quantize(depth, F::RG32F), quantize(normal, F::RGBA32F), given);
+      // Depth is passed through, the gradient is a difference of two fp32 depths, the octahedral
+      // coordinates are in [-1, 1]: fp32 arithmetic error only.
+      DENOISE_CHECK_CLOSE(compare(got, want, 4, fp32_tolerance(10)), "pack_surface");
+      int background = 0;
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const bool got_bg = got.at(x, y, 0) == 0 && got.at(x, y, 1) == 0 && got.at(x, y, 2) == 0 && got.at(x, y, 3) == 0;
+          CHECK_MESSAGE(got_bg == (want.at(x, y, 0) == 0), "background at " << x << "," << y);
+          background += got_bg;
+        }
+      for (int x = 0; x < 5; ++x) CHECK(got.at(x, 0, 0) == 0.0);
+      CHECK(got.at(0, 1, 0) == 0.0);
+      CHECK(got.at(1, 1, 0) == 5.0f);
+      CHECK(std::isfinite(got.at(1, 1, 1)));
+      CHECK(got.at(2, 1, 1) >= 0.0);
+      CHECK(background >= 6);
+    }
+}
 
 TEST_CASE("denoise passes: gradient pass matches the CPU reference") {
   ValidatedDevice device;

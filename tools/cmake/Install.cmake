@@ -1,11 +1,12 @@
-# `cmake --install build --prefix P`: the HAL and its Vulkan backend as the CMake package `asvgf`
-# (find_package(asvgf CONFIG) gives asvgf::hal and asvgf::hal_vulkan), headers under P/include.
-# The denoiser library (asvgf::denoiser) joins this export set when its public API lands (issue 19).
+# `cmake --install build --prefix P`: the denoiser, the HAL and its Vulkan backend as the CMake
+# package `asvgf` (find_package(asvgf CONFIG) gives asvgf::denoiser, asvgf::hal and
+# asvgf::hal_vulkan), headers under P/include (asvgf/ is the denoiser's public API; its internal
+# headers are not installed). The shaders are compiled into libdenoiser.a.
 include(CMakePackageConfigHelpers)
 
 set(ASVGF_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/asvgf)
-install(TARGETS hal hal_vulkan EXPORT asvgfTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(DIRECTORY ${CMAKE_SOURCE_DIR}/hal/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(TARGETS denoiser hal hal_vulkan EXPORT asvgfTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/hal/include/ ${CMAKE_SOURCE_DIR}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # presenter.hpp belongs to hal_vulkan_present (GLFW windows), which is not installed.
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/hal_vulkan/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         PATTERN presenter.hpp EXCLUDE)

@@ -1,0 +1,171 @@
+// asvgf::Denoiser (include/asvgf/denoiser.hpp): the caller's images imported into a render graph of
+// pack_surface + add_denoiser (the same chain the frame runs), compiled and recorded every frame.
+#include "asvgf/denoiser.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "graph/graph_runtime.hpp"
+#include "hal/error.hpp"
+#include "passes/denoiser.hpp"
+#include "passes/pack_surface.hpp"
+#include "passes/temporal.hpp"
+
+namespace asvgf {
+namespace {
+
+using graph::ResourceId;
+
+bool float_format(hal::Format f) {
+  switch (f) {
+    case hal::Format::R16F:
+    case hal::Format::RG16F:
+    case hal::Format::RGBA16F:
+    case hal::Format::R32F:
+    case hal::Format::RG32F:
+    case hal::Format::RGBA32F:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// Throws naming the input when `image` cannot be read as `channels` float channels.
+void check_input(const std::string& name, const DenoiserImage& image, std::uint32_t channels) {
+  if (!image.image) throw hal::Error(hal::ErrorKind::InvalidUsage, "denoiser input " + name, "no image given");
+  if (!float_format(image.format) || hal::format_channels(image.format) < channels)
+    throw hal::Error(hal::ErrorKind::InvalidUsage, "denoiser input " + name,
+                     "format " + std::string(hal::format_name(image.format)) + " is not a float format with at least " +
+                         std::to_string(channels) + " channel(s)");
+}
+
+void check_output(const std::string& name, const DenoiserImage& image, hal::Format want) {
+  if (!image.image) throw hal::Error(hal::ErrorKind::InvalidUsage, "denoiser output " + name, "no image given");
+  if (image.format != want)
+    throw hal::Error(hal::ErrorKind::InvalidUsage, "denoiser output " + name,
+                     "format " + std::string(hal::format_name(image.format)) + " given, " +
+                         std::string(hal::format_name(want)) + " needed (a storage image the shader writes)");
+}
+
+void check_config(const hal::Device& device, const DenoiserConfig& c) {
+  const auto max = device.capabilities().max_image_dimension;
+  if (c.width == 0 || c.height == 0 || c.width > max || c.height > max)
+    throw hal::Error(
+        hal::ErrorKind::InvalidDescriptor, "denoiser size",
+        std::to_string(c.width) + "x" + std::to_string(c.height) + " is outside 1.." + std::to_string(max));
+  const auto& s = c.settings;
+  auto fail = [](const char* what, const std::string& why) {
+    throw hal::Error(hal::ErrorKind::InvalidDescriptor, std::string("denoiser setting ") + what, why);
+  };
+  if (!(s.alpha > 0.0f && s.alpha <= 1.0f)) fail("alpha", "must be in (0, 1]");
+  if (!(s.moments_alpha > 0.0f && s.moments_alpha <= 1.0f)) fail("moments_alpha", "must be in (0, 1]");
+  if (s.atrous_iterations < 0 || s.atrous_iterations > 16) fail("atrous_iterations", "must be in 0..16");
+  if (s.gradient_iterations < 0 || s.gradient_iterations > 8) fail("gradient_iterations", "must be in 0..8");
+  if (s.history_tap < 0 || (s.atrous_iterations > 0 && s.history_tap >= s.atrous_iterations))
+    fail("history_tap", "must name one of the a-trous iterations (0.." + std::to_string(s.atrous_iterations - 1) + ")");
+  if (!(s.history_cap >= 1.0f)) fail("history_cap", "must be >= 1");
+  if (!(s.sigma_z > 0.0f) || !(s.sigma_n >= 0.0f) || !(s.sigma_l > 0.0f))
+    fail("sigma_z/sigma_n/sigma_l", "must be positive");
+  if (!(s.exposure >= 0.0f) || !(s.exposure < 1e30f)) fail("exposure", "must be finite and >= 0");
+}
+
+}  // namespace
+
+struct Denoiser::Impl {
+  Impl(hal::Device& d, const DenoiserConfig& c) : device(d), config(c), runtime(d), pipelines(d), counters(d) {}
+  hal::Device& device;
+  DenoiserConfig config;
+  graph::GraphRuntime runtime;
+  passes::PipelineCache pipelines;
+  passes::SanitizeCounters counters;
+  std::unique_ptr<hal::CommandList> own_commands;
+};
+
+Denoiser::Denoiser(hal::Device& device, const DenoiserConfig& config) {
+  check_config(device, config);
+  impl_ = std::make_unique<Impl>(device, config);
+  impl_->config.settings.adaptive = config.method == DenoiseMethod::Asvgf;
+}
+
+Denoiser::~Denoiser() {
+  try {
+    impl_->device.wait();  // the last frame may still read what the runtime is about to release
+  } catch (...) {
+    // A lost device has nothing left to wait for.
+  }
+}
+
+const DenoiserConfig& Denoiser::config() const {
+  return impl_->config;
+}
+
+void Denoiser::reset() {
+  impl_->runtime.reset_histories();
+}
+
+void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, const DenoiserOutputs& out) {
+  using F = hal::Format;
+  const std::uint32_t w = impl_->config.width, h = impl_->config.height;
+  check_input("illumination", in.illumination, 3);
+  check_input("albedo", in.albedo, 3);
+  check_input("normal", in.normal, 3);
+  check_input("depth", in.depth, impl_->config.depth_gradient_given ? 2 : 1);
+  check_input("motion", in.motion, 2);
+  if (in.gradient_samples) check_input("gradient_samples", *in.gradient_samples, 2);
+  check_output("radiance", out.radiance, F::RGBA32F);
+  if (out.display) check_output("display", *out.display, F::RGBA8Unorm);
+  if (in.camera_cut) reset();
+
+  graph::RenderGraph g;
+  auto import = [&](const char* name, const DenoiserImage& image, std::uint32_t iw, std::uint32_t ih) {
+    return g.import(name, image.image, image.state, iw, ih, image.format);
+  };
+  const std::uint32_t gw = (w + 2) / 3, gh = (h + 2) / 3;
+  const ResourceId illumination = import("illumination", in.illumination, w, h);
+  const ResourceId albedo = import("albedo", in.albedo, w, h);
+  const ResourceId normal = import("normal", in.normal, w, h);
+  const ResourceId depth = import("depth", in.depth, w, h);
+  const ResourceId motion = import("motion", in.motion, w, h);
+  const ResourceId radiance = import("radiance", out.radiance, w, h);
+  const ResourceId display =
+      out.display ? import("display", *out.display, w, h) : g.add_image("display", w, h, F::RGBA8Unorm);
+  const ResourceId counters = impl_->counters.import(g);
+  const ResourceId depth_normal = g.add_image("depth_normal", w, h, F::RGBA32F, graph::Lifetime::Persistent);
+  passes::add_pack_surface(g, impl_->pipelines, {depth, normal, depth_normal}, impl_->config.depth_gradient_given);
+
+  const bool adaptive = impl_->config.method == DenoiseMethod::Asvgf;
+  std::optional<ResourceId> gradient_samples;
+  if (adaptive && in.gradient_samples) gradient_samples = import("gradient_samples", *in.gradient_samples, gw, gh);
+  const passes::Filter filter =
+      impl_->config.method == DenoiseMethod::Ema ? passes::Filter::Temporal : passes::Filter::Spatiotemporal;
+  passes::add_denoiser(g, impl_->pipelines,
+                       {illumination, motion, depth_normal, albedo, counters, radiance, display, gradient_samples,
+                        gradient_samples ? "" : "no gradient samples given this frame (nothing moved)"},
+                       impl_->config.settings, filter);
+  g.output(radiance, out.final_state);
+  if (out.display) g.output(display, out.final_state);
+
+  const graph::CompiledFrame frame = impl_->runtime.compile(g);
+  impl_->runtime.execute(frame, commands);
+}
+
+void Denoiser::denoise(const DenoiserInputs& inputs, const DenoiserOutputs& outputs) {
+  if (!impl_->own_commands) impl_->own_commands = impl_->device.create_command_list("asvgf denoiser");
+  impl_->own_commands->reset();
+  record(*impl_->own_commands, inputs, outputs);
+  impl_->device.submit(*impl_->own_commands);
+  impl_->device.wait();
+}
+
+std::vector<Denoiser::PassTime> Denoiser::timings() {
+  std::vector<PassTime> out;
+  for (auto& t : impl_->runtime.timings()) out.push_back({t.pass, t.gpu_ms});
+  return out;
+}
+
+Denoiser::Sanitised Denoiser::sanitised() {
+  const auto c = impl_->counters.read();
+  return {c.nan_samples, c.inf_samples, c.clamped_samples, c.zeroed_outputs};
+}
+
+}  // namespace asvgf

@@ -1,0 +1,58 @@
+// pack_surface.comp: the renderer's linear depth and world-space normal as the denoiser's
+// depth_normal texel (common/denoise.glsl: z, depth gradient, octahedral normal). A pixel whose depth
+// is not finite or not positive, or whose normal is not finite or (nearly) zero, is background (all zero):
+// no filter weight reaches it and no history is reprojected onto it. The depth gradient is the
+// renderer's (depth.y) when given, else estimated from the neighbours: per axis the smaller
+// difference to a neighbour that is not background (the one on the same surface at a silhouette),
+// then the larger of the two axes, as the G-buffer's max(|dz/dx|, |dz/dy|).
+// CPU twin: reference::pack_surface (pipeline/reference/denoise_reference.cpp).
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_samplerless_texture_functions : require
+#include "common/color.glsl"
+#include "common/compute.glsl"
+#include "common/octahedral.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform Params {
+  uint width;
+  uint height;
+  uint depth_gradient_given;  // 1: depth.y holds max(|dz/dx|, |dz/dy|)
+  uint pad;
+} params;
+layout(set = 0, binding = 1) uniform texture2D depth;   // x: linear view depth; y: its gradient (optional)
+layout(set = 0, binding = 2) uniform texture2D normal;  // xyz: world-space normal
+layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D depth_normal;
+
+// The depth at q, or 0 outside the image and on background.
+float depth_at(ivec2 q) {
+  if (q.x < 0 || q.y < 0 || !inside(q, params.width, params.height)) return 0.0;
+  float z = texelFetch(depth, q, 0).x;
+  return not_finite(z) || z <= 0.0 ? 0.0 : z;
+}
+
+// The smaller |z_q - z| over the two neighbours along `axis` that are not background; 0 if neither.
+float axis_gradient(ivec2 p, float z, ivec2 axis) {
+  float a = depth_at(p - axis), b = depth_at(p + axis);
+  float g = 3.4e38;
+  if (a > 0.0) g = abs(a - z);
+  if (b > 0.0) g = min(g, abs(b - z));
+  return g == 3.4e38 ? 0.0 : g;
+}
+
+void main() {
+  ivec2 p = invocation_pixel();
+  if (!inside(p, params.width, params.height)) return;
+  vec2 zg = texelFetch(depth, p, 0).xy;
+  vec3 n = texelFetch(normal, p, 0).xyz;
+  float l1 = abs(n.x) + abs(n.y) + abs(n.z);
+  vec4 texel = vec4(0.0);
+  if (!not_finite(zg.x) && zg.x > 0.0 && !any_not_finite(n) && l1 >= 1e-30 && !not_finite(l1)) {
+    float dz = zg.y;
+    if (params.depth_gradient_given == 0u || not_finite(dz) || dz < 0.0)
+      dz = max(axis_gradient(p, zg.x, ivec2(1, 0)), axis_gradient(p, zg.x, ivec2(0, 1)));
+    texel = vec4(zg.x, dz, oct_encode(n));
+  }
+  imageStore(depth_normal, p, texel);
+}
