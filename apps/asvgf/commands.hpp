@@ -14,6 +14,8 @@ std::function<int()> add_graph_command(CLI::App& app);
 std::function<int()> add_render_command(CLI::App& app);
 // Registers `report`.
 std::function<int()> add_report_command(CLI::App& app);
+// Registers `denoise`.
+std::function<int()> add_denoise_command(CLI::App& app);
 // Registers `bench`.
 std::function<int()> add_bench_command(CLI::App& app);
 

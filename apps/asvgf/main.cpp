@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
   commands.emplace_back(app.get_subcommand("info"), info);
   auto render = asvgf::cli::add_render_command(app);
   commands.emplace_back(app.get_subcommand("render"), render);
+  auto denoise = asvgf::cli::add_denoise_command(app);
+  commands.emplace_back(app.get_subcommand("denoise"), denoise);
   auto bench = asvgf::cli::add_bench_command(app);
   commands.emplace_back(app.get_subcommand("bench"), bench);
   auto graph = asvgf::cli::add_graph_command(app);

@@ -21,6 +21,7 @@ struct RenderOptions {
   std::uint32_t spp = 0;  // 0: 1 for the denoisers, 256 for the reference method
   std::uint32_t reference_spp = 0;
   std::string out = "out";
+  bool aovs = false;
   bool quiet = false;
 };
 
@@ -35,6 +36,17 @@ void write_frame(const std::filesystem::path& dir, const char* prefix, int frame
   render::write_png(dir / frame_name(prefix, frame, "png"), img.width, img.height, img.display);
 }
 
+// The denoiser's inputs of one frame as `asvgf denoise` reads them (see its --input).
+void write_aovs(const std::filesystem::path& dir, int frame, const render::AovImages& a, std::uint32_t w, std::uint32_t h) {
+  render::write_exr(dir / frame_name("color", frame, "exr"), w, h, a.illumination);
+  render::write_exr(dir / frame_name("albedo", frame, "exr"), w, h, a.albedo);
+  render::write_exr(dir / frame_name("normal", frame, "exr"), w, h, a.normal);
+  render::write_exr(dir / frame_name("depth", frame, "exr"), w, h, a.depth);
+  render::write_exr(dir / frame_name("motion", frame, "exr"), w, h, a.motion);
+  if (!a.gradient_samples.empty())
+    render::write_exr(dir / frame_name("gradient", frame, "exr"), (w + 2) / 3, (h + 2) / 3, a.gradient_samples);
+}
+
 int run_render(RenderOptions& o) {
   finish_scene_options(o.scene);
   const scene::Scene scene = load_scene(o.scene);
@@ -42,12 +54,16 @@ int run_render(RenderOptions& o) {
   auto device = open_device(o.scene);
   render::RenderSettings settings = render_settings(o.scene);
   settings.spp = o.spp > 0 ? o.spp : (settings.method == frame::Method::Reference ? 256 : 1);
+  if (o.aovs && settings.method == frame::Method::Reference)
+    throw CLI::ValidationError("--aovs", "the reference method has no denoiser inputs; use raw, ema, svgf or asvgf");
+  settings.aovs = o.aovs;
   render::Renderer renderer(*device, scene, settings);
 
   std::unique_ptr<render::Renderer> reference;
   if (o.reference_spp > 0) {
     render::RenderSettings r = settings;
     r.method = frame::Method::Reference;
+    r.aovs = false;
     r.spp = o.reference_spp;
     r.seed = settings.seed ^ 0x9e3779b9u;  // independent of the method's noise
     reference = std::make_unique<render::Renderer>(*device, scene, r);
@@ -67,6 +83,7 @@ int run_render(RenderOptions& o) {
   for (int f = 0; f < frames; ++f) {
     const render::FrameImages img = renderer.render(f);
     write_frame(dir, "frame", f, img);
+    if (img.aovs) write_aovs(dir, f, *img.aovs, img.width, img.height);
     std::map<std::string, std::string> row{{"frame", std::to_string(f)}, {"method", o.scene.method}};
     double total = 0.0;
     bool timed = true;
@@ -112,8 +129,12 @@ int run_render(RenderOptions& o) {
                  "sanitised: %u samples with NaN and %u with Inf dropped before the histories, %u clamped to the "
                  "fp16 maximum 65504, %u output pixels written as 0 (not finite)\n",
                  sanitised.nan_samples, sanitised.inf_samples, sanitised.clamped_samples, sanitised.zeroed_outputs);
-    std::fprintf(stderr, "results: %s/frame_NNNN.{exr,png}%s\n", dir.string().c_str(),
-                 reference ? ", reference_NNNN.{exr,png}, metrics.csv" : "");
+    std::fprintf(stderr, "results: %s/frame_NNNN.{exr,png}%s%s\n", dir.string().c_str(),
+                 reference ? ", reference_NNNN.{exr,png}, metrics.csv" : "",
+                 o.aovs ? (", denoiser inputs {color,albedo,normal,depth,motion}_NNNN.exr" +
+                           std::string(settings.method == frame::Method::Asvgf ? ", gradient_NNNN.exr" : ""))
+                              .c_str()
+                        : "");
   }
   return 0;
 }
@@ -131,6 +152,9 @@ std::function<int()> add_render_command(CLI::App& app) {
                   "Also render a reference with this many spp per frame and write metrics.csv")
       ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--out", o->out, "Output folder")->capture_default_str();
+  cmd->add_flag("--aovs", o->aovs,
+                "Also write the denoiser's inputs per frame (color = demodulated radiance, albedo, normal, depth, "
+                "motion; gradient samples for asvgf) as EXR, for `asvgf denoise --input`");
   cmd->add_flag("--quiet", o->quiet, "No progress output");
   return [o] { return run_render(*o); };
 }

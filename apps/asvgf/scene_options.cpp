@@ -29,6 +29,12 @@ void add_backend_option(CLI::App& cmd, SceneOptions& o) {
       ->check(CLI::IsMember({"vulkan", "gl", "gles"}));
 }
 
+void add_device_options(CLI::App& cmd, SceneOptions& o) {
+  add_backend_option(cmd, o);
+  cmd.add_option("--device", o.device, "Vulkan adapter: index or part of its name (default: $ASVGF_DEVICE, else best)");
+  cmd.add_flag("--validation", o.validation, "Enable the Vulkan validation layer (synchronization validation on)");
+}
+
 void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--scene", o.scene, "Built-in scene ('cornell') or a scene file (.json)")->capture_default_str();
   cmd.add_option("--animation", o.animation, "Animation of the built-in scene")
@@ -38,10 +44,8 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
       ->check(CLI::IsMember({"raw", "ema", "svgf", "asvgf", "reference"}))
       ->capture_default_str();
   cmd.add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
-  add_backend_option(cmd, o);
-  cmd.add_option("--device", o.device, "Vulkan adapter: index or part of its name (default: $ASVGF_DEVICE, else best)");
+  add_device_options(cmd, o);
   cmd.add_flag("--software-bvh", o.software_bvh, "Trace with the software BVH even where ray queries exist");
-  cmd.add_flag("--validation", o.validation, "Enable the Vulkan validation layer (synchronization validation on)");
   cmd.add_option("--seed", o.seed, "Random seed: the same seed gives the same images")->capture_default_str();
   cmd.add_option("--max-bounces", o.max_bounces, "Path length after the primary hit")
       ->check(CLI::Range(1, 64))

@@ -31,6 +31,8 @@ struct SceneOptions {
 void add_scene_options(CLI::App& cmd, SceneOptions& options);
 // The denoiser parameters alone (--alpha ... --history-tap, --kernel), part of add_scene_options.
 void add_denoise_options(CLI::App& cmd, SceneOptions& options);
+// --backend --device --validation (part of add_scene_options).
+void add_device_options(CLI::App& cmd, SceneOptions& options);
 // --backend alone (commands with their own scene options, e.g. report).
 void add_backend_option(CLI::App& cmd, SceneOptions& options);
 // Checks what CLI11 cannot (size syntax); throws CLI::ValidationError naming the option.

@@ -1,6 +1,9 @@
 // Declaring the passes of one frame for each method.
 #include "frame/frame_graph.hpp"
 
+#include "hal/error.hpp"
+#include "passes/aov_passes.hpp"
+
 namespace asvgf::frame {
 
 namespace {
@@ -97,6 +100,25 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
                           denoised.variance, denoise},
                          s.debug_view.value_or(passes::DebugView::Normals), w, h);
   if (s.debug_view) g.output(debug, hal::State::CopySrc);
+
+  if (targets.aovs) {
+    if (s.method == Method::Reference)
+      throw hal::Error(hal::ErrorKind::InvalidUsage, "frame AOVs", "the reference method has no denoiser inputs to export");
+    const AovTargets& a = *targets.aovs;
+    auto import = [&](const char* name, const ImageTarget& t, std::uint32_t iw, std::uint32_t ih) {
+      const ResourceId id = g.import(name, t.image, t.state, iw, ih, F::RGBA32F);
+      g.output(id, hal::State::CopySrc);
+      return id;
+    };
+    passes::add_export_aovs(g, pipelines_,
+                            {depth_normal, albedo, import("aov.depth", a.depth, w, h),
+                             import("aov.normal", a.normal, w, h), import("aov.albedo", a.albedo, w, h)});
+    passes::add_image_copy(g, "aov_illumination", illumination, import("aov.illumination", a.illumination, w, h));
+    passes::add_image_copy(g, "aov_motion", motion, import("aov.motion", a.motion, w, h));
+    if (gradients)
+      passes::add_image_copy(g, "aov_gradient_samples", gradient_prev,
+                             import("aov.gradient_samples", a.gradient_samples, gw, gh));
+  }
   return g;
 }
 

@@ -47,6 +47,18 @@ struct FrameSettings : FrameConfig {
   bool accumulation_valid = false;  // reference: last frame's accumulation continues
 };
 
+// One caller-owned image and the state it is in when the frame starts.
+struct ImageTarget {
+  hal::ImageHandle image;
+  hal::State state = hal::State::Undefined;
+};
+// `asvgf render --aovs`: the denoiser's inputs in the public API's conventions
+// (include/asvgf/denoiser.hpp), all RGBA32F and left in CopySrc. gradient_samples (ceil(w/3) x
+// ceil(h/3)) is written only on frames where the gradient passes run (A-SVGF, something moved).
+struct AovTargets {
+  ImageTarget illumination, albedo, normal, depth, motion, gradient_samples;
+};
+
 // Images the frame writes its results to, owned by the caller and imported into the graph; the
 // frame leaves them in CopySrc for readback.
 struct FrameTargets {
@@ -58,6 +70,7 @@ struct FrameTargets {
   hal::State debug_state = hal::State::Undefined;
   hal::BufferHandle ray_counter;  // >= 4 bytes, zeroed by the caller: the path tracer adds its rays
   hal::State ray_counter_state = hal::State::Undefined;
+  std::optional<AovTargets> aovs;  // raw, ema, svgf, asvgf
 };
 
 class FrameGraphBuilder {
@@ -65,6 +78,7 @@ class FrameGraphBuilder {
   explicit FrameGraphBuilder(hal::Device& device);
 
   // Declares the frame over the scene's GPU buffers (imported) and the caller's output images.
+  // Throws hal::Error(InvalidUsage) when AOVs are asked of the reference method.
   graph::RenderGraph build(const FrameSettings& settings, const render::SceneGpu& scene, const FrameTargets& targets);
   // What the temporal and composite passes dropped, clamped and zeroed so far (waits for the device).
   passes::SanitizeCounters::Counts dropped_samples() { return counters_.read(); }

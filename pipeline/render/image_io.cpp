@@ -77,18 +77,74 @@ void write_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t
 }
 
 ExrImage read_exr(const std::filesystem::path& path) {
-  float* data = nullptr;
-  int w = 0, h = 0;
+  const std::string name = path.string();
+  EXRVersion version;
+  if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS)
+    throw ImageIoError(name + ": cannot read EXR: not an OpenEXR file (or unreadable)");
+  if (version.multipart || version.non_image)
+    throw ImageIoError(name + ": cannot read EXR: multi-part and deep files are not supported");
+  EXRHeader header;
+  InitEXRHeader(&header);
   const char* err = nullptr;
-  if (LoadEXR(&data, &w, &h, path.c_str(), &err) != 0) {
-    std::string message = err ? err : "unknown error";
+  auto fail = [&](const std::string& what) {
+    std::string message = err ? err : what;
     if (err) FreeEXRErrorMessage(err);
-    throw ImageIoError(path.string() + ": cannot read EXR: " + message);
+    throw ImageIoError(name + ": cannot read EXR: " + message);
+  };
+  if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) fail("bad header");
+  ExrImage out;
+  int index[4] = {-1, -1, -1, -1};  // R, G, B, A
+  std::string unsupported;
+  for (int i = 0; i < header.num_channels; ++i) {
+    const std::string channel = header.channels[i].name;
+    out.channels.push_back(channel);
+    if (header.pixel_types[i] == TINYEXR_PIXELTYPE_UINT) unsupported = channel;
+    header.requested_pixel_types[i] = TINYEXR_PIXELTYPE_FLOAT;
+    for (int c = 0; c < 4; ++c)
+      if (channel == std::string(1, "RGBA"[c])) index[c] = i;
   }
-  ExrImage image{static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h),
-                 std::vector<float>(data, data + std::size_t(w) * std::size_t(h) * 4)};
-  std::free(data);
-  return image;
+  if (!unsupported.empty()) {
+    FreeEXRHeader(&header);
+    throw ImageIoError(name + ": cannot read EXR: channel " + unsupported + " holds unsigned integers, not floats");
+  }
+  // One channel of any name is a grey image (as tinyexr's LoadEXR reads it).
+  if (header.num_channels == 1) index[0] = index[1] = index[2] = 0;
+  if (index[0] < 0 && index[1] < 0 && index[2] < 0 && index[3] < 0) {
+    FreeEXRHeader(&header);
+    throw ImageIoError(name + ": cannot read EXR: no R, G, B or A channel (and more than one channel)");
+  }
+  EXRImage image;
+  InitEXRImage(&image);
+  if (LoadEXRImageFromFile(&image, &header, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    FreeEXRHeader(&header);
+    fail("bad pixel data");
+  }
+  out.width = static_cast<std::uint32_t>(image.width);
+  out.height = static_cast<std::uint32_t>(image.height);
+  out.rgba.assign(std::size_t(out.width) * out.height * 4, 0.0f);
+  for (std::size_t p = 0; p < std::size_t(out.width) * out.height; ++p) out.rgba[4 * p + 3] = 1.0f;
+  // Copies one block of planes (the whole image, or a tile) into RGBA.
+  auto copy = [&](unsigned char** planes, int x0, int y0, int bw, int bh) {
+    for (int c = 0; c < 4; ++c) {
+      if (index[c] < 0) continue;
+      const float* plane = reinterpret_cast<const float*>(planes[index[c]]);
+      for (int y = 0; y < bh; ++y)
+        for (int x = 0; x < bw; ++x) {
+          if (x0 + x >= image.width || y0 + y >= image.height) continue;
+          out.rgba[(std::size_t(y0 + y) * out.width + std::size_t(x0 + x)) * 4 + std::size_t(c)] = plane[y * bw + x];
+        }
+    }
+  };
+  if (header.tiled) {
+    for (int t = 0; t < image.num_tiles; ++t)
+      copy(image.tiles[t].images, image.tiles[t].offset_x * header.tile_size_x,
+           image.tiles[t].offset_y * header.tile_size_y, header.tile_size_x, header.tile_size_y);
+  } else {
+    copy(image.images, 0, 0, image.width, image.height);
+  }
+  FreeEXRImage(&image);
+  FreeEXRHeader(&header);
+  return out;
 }
 
 }  // namespace asvgf::render

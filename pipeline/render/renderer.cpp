@@ -41,6 +41,54 @@ Renderer::Renderer(hal::Device& device, const scene::Scene& scene, const RenderS
       {"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopySrc | hal::BufferUsage::CopyDst});
   if (settings.debug_view)
     targets_.debug = device.create_image({"debug_view", settings.width, settings.height, hal::Format::RGBA8Unorm, usage});
+  if (settings.aovs) create_aov_targets();
+}
+
+void Renderer::create_aov_targets() {
+  if (settings_.method == frame::Method::Reference)
+    throw hal::Error(hal::ErrorKind::InvalidUsage, "renderer AOVs", "the reference method has no denoiser inputs to export");
+  const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc |
+                     hal::ImageUsage::CopyDst;
+  const std::uint32_t w = settings_.width, h = settings_.height;
+  auto image = [&](const char* name, std::uint32_t iw, std::uint32_t ih) {
+    return frame::ImageTarget{device_.create_image({name, iw, ih, hal::Format::RGBA32F, usage})};
+  };
+  targets_.aovs = frame::AovTargets{image("aov.illumination", w, h), image("aov.albedo", w, h),
+                                    image("aov.normal", w, h),       image("aov.depth", w, h),
+                                    image("aov.motion", w, h),       image("aov.gradient_samples", (w + 2) / 3, (h + 2) / 3)};
+}
+
+void Renderer::destroy_aov_targets() {
+  if (!targets_.aovs) return;
+  auto& a = *targets_.aovs;
+  for (auto* t : {&a.illumination, &a.albedo, &a.normal, &a.depth, &a.motion, &a.gradient_samples})
+    device_.destroy(t->image);
+  targets_.aovs.reset();
+}
+
+AovImages Renderer::read_aovs(bool gradient_ran) {
+  auto& a = *targets_.aovs;
+  AovImages out;
+  const std::size_t n = std::size_t(settings_.width) * settings_.height * 4;
+  auto read = [&](frame::ImageTarget& t, std::vector<float>& to, std::size_t count) {
+    to.resize(count);
+    device_.read_image(t.image, std::as_writable_bytes(std::span(to)));
+  };
+  read(a.illumination, out.illumination, n);
+  read(a.albedo, out.albedo, n);
+  read(a.normal, out.normal, n);
+  read(a.depth, out.depth, n);
+  read(a.motion, out.motion, n);
+  const std::size_t strata = std::size_t((settings_.width + 2) / 3) * ((settings_.height + 2) / 3) * 4;
+  out.gradient_ran = gradient_ran;
+  if (settings_.method != frame::Method::Asvgf) return out;
+  if (gradient_ran) {
+    read(a.gradient_samples, out.gradient_samples, strata);
+  } else {
+    out.gradient_samples.assign(strata, 0.0f);
+    for (std::size_t i = 1; i < strata; i += 4) out.gradient_samples[i] = -1.0f;
+  }
+  return out;
 }
 
 void Renderer::set_batches() {
@@ -66,6 +114,8 @@ void Renderer::set_settings(const RenderSettings& s) {
   }
   settings_ = s;
   set_batches();
+  if (s.aovs && !targets_.aovs) create_aov_targets();
+  if (!s.aovs) destroy_aov_targets();
 }
 
 Renderer::~Renderer() {
@@ -76,6 +126,7 @@ Renderer::~Renderer() {
     device_.destroy(targets_.display);
     device_.destroy(targets_.ray_counter);
     if (targets_.debug) device_.destroy(targets_.debug);
+    destroy_aov_targets();
   } catch (...) {
     // Nothing to release on a lost device.
   }
@@ -98,6 +149,7 @@ FrameImages Renderer::render(int frame) {
   const std::array<std::uint32_t, 4> zero{};
   device_.upload_buffer(targets_.ray_counter, 0, std::as_bytes(std::span(zero)));
   targets_.ray_counter_state = hal::State::CopyDst;
+  const bool gradient_ran = settings_.method == frame::Method::Asvgf && moved && !first;
   for (std::uint32_t b = 0; b < batches; ++b) {
     frame::FrameSettings s;
     static_cast<frame::FrameConfig&>(s) = settings_;
@@ -113,6 +165,11 @@ FrameImages Renderer::render(int frame) {
     device_.wait();
     targets_.hdr_state = targets_.display_state = targets_.ray_counter_state = hal::State::CopySrc;
     if (settings_.debug_view) targets_.debug_state = hal::State::CopySrc;
+    if (targets_.aovs) {
+      auto& a = *targets_.aovs;
+      for (auto* t : {&a.illumination, &a.albedo, &a.normal, &a.depth, &a.motion}) t->state = hal::State::CopySrc;
+      if (gradient_ran) a.gradient_samples.state = hal::State::CopySrc;
+    }
     for (const auto& t : runtime_.timings()) {
       if (!totals.count(t.pass)) order.push_back(t.pass);
       totals[t.pass] += t.gpu_ms.value_or(0.0);
@@ -139,6 +196,7 @@ FrameImages Renderer::render(int frame) {
     out.debug.resize(out.display.size());
     device_.read_image(targets_.debug, std::as_writable_bytes(std::span(out.debug)));
   }
+  if (targets_.aovs) out.aovs = read_aovs(gradient_ran);
   return out;
 }
 

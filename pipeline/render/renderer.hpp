@@ -25,6 +25,18 @@ struct RenderSettings : frame::FrameConfig {
   // Scene time per frame: 1 renders the animation at its keyframes' pace; smaller steps render it
   // in slow motion (the benchmark keeps a short move going for hundreds of frames).
   float time_per_frame = 1.0f;
+  // Also read back the denoiser's inputs (FrameImages::aovs); not for the reference method.
+  bool aovs = false;
+};
+
+// The denoiser's inputs of one frame in the public API's conventions (include/asvgf/denoiser.hpp),
+// RGBA floats, rows top to bottom.
+struct AovImages {
+  std::vector<float> illumination, albedo, normal, depth, motion;
+  // A-SVGF only (else empty), ceil(w/3) x ceil(h/3); on frames without gradient passes every
+  // stratum says "no sample" (luminance 0, index -1).
+  std::vector<float> gradient_samples;
+  bool gradient_ran = false;
 };
 
 struct FrameImages {
@@ -32,6 +44,7 @@ struct FrameImages {
   std::vector<float> hdr;             // RGBA, linear radiance
   std::vector<std::uint8_t> display;  // RGBA8, tonemapped sRGB
   std::vector<std::uint8_t> debug;    // RGBA8 when a debug view was asked for
+  std::optional<AovImages> aovs;      // RenderSettings::aovs
 };
 
 class Renderer {
@@ -79,6 +92,9 @@ class Renderer {
   std::uint32_t batches_ = 1, batch_spp_ = 1;
   int last_frame_ = -1;
   void set_batches();
+  void create_aov_targets();
+  void destroy_aov_targets();
+  AovImages read_aovs(bool gradient_ran);
   std::uint64_t rays_last_frame_ = 0;
   bool moved_last_frame_ = false;
 };

@@ -13,4 +13,4 @@ asvgf_add_shader(accumulate SOURCE frame/accumulate.comp)
 asvgf_add_shader(debug_view SOURCE frame/debug_view.comp)
 # Not a frame pass: the benchmark's bandwidth measurement.
 asvgf_add_shader(bandwidth_copy SOURCE frame/bandwidth_copy.comp)
-asvgf_add_shader(unpack_surface SOURCE frame/unpack_surface.comp)
+asvgf_add_shader(export_aovs SOURCE frame/export_aovs.comp)

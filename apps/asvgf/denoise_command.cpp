@@ -1,0 +1,266 @@
+// `asvgf denoise`: denoises a frame sequence rendered elsewhere (per-buffer EXR sequences, in the
+// manner of Intel Open Image Denoise's command line, plus depth, motion and A-SVGF's gradient
+// samples) through the public API (include/asvgf/denoiser.hpp), and writes every frame as EXR and
+// PNG; with --reference also metrics.csv. `asvgf render --aovs` writes exactly these buffers.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "asvgf/denoiser.hpp"
+#include "commands.hpp"
+#include "frame_sequence.hpp"
+#include "motion_check.hpp"
+#include "progress.hpp"
+#include "render/image_io.hpp"
+#include "render/metrics.hpp"
+#include "scene_options.hpp"
+
+namespace asvgf::cli {
+namespace {
+
+struct DenoiseOptions {
+  SceneOptions device;  // backend, adapter, validation and the denoiser parameters
+  std::string method = "asvgf";
+  std::string input;  // a folder of `asvgf render --aovs`
+  std::string color, albedo, normal, depth, motion, gradient, reference;
+  bool depth_gradient = false;
+  bool motion_check = true;
+  int first = 0;
+  int frames = 0;  // 0: as many as --color has from --first-frame on
+  std::string out = "denoised";
+  bool quiet = false;
+};
+
+std::string frame_file(const char* prefix, int frame, const char* ext) {
+  char name[64];
+  std::snprintf(name, sizeof name, "%s_%04d.%s", prefix, frame, ext);
+  return name;
+}
+
+// --input DIR fills every pattern not given explicitly with DIR/<buffer>_%04d.exr (the gradient
+// only for asvgf, and only when DIR has one for the first frame) and reads the depth gradient.
+void apply_input_folder(DenoiseOptions& o) {
+  if (o.input.empty()) return;
+  const std::filesystem::path dir(o.input);
+  if (!std::filesystem::is_directory(dir))
+    throw CLI::ValidationError("--input", "'" + o.input + "' is not a folder (one written by asvgf render --aovs)");
+  auto fill = [&](std::string& pattern, const char* buffer) {
+    if (pattern.empty()) pattern = (dir / (std::string(buffer) + "_%04d.exr")).string();
+  };
+  fill(o.color, "color");
+  fill(o.albedo, "albedo");
+  fill(o.normal, "normal");
+  fill(o.depth, "depth");
+  fill(o.motion, "motion");
+  if (o.method == "asvgf" && o.gradient.empty() &&
+      std::filesystem::exists(dir / frame_file("gradient", o.first, "exr")))
+    fill(o.gradient, "gradient");
+  o.depth_gradient = true;
+}
+
+// True when some stratum holds a gradient sample (index 0..8); false: nothing moved this frame.
+bool has_gradient_samples(const render::ExrImage& image) {
+  for (std::size_t i = 1; i < image.rgba.size(); i += 4)
+    if (image.rgba[i] >= 0.0f && image.rgba[i] < 9.0f) return true;
+  return false;
+}
+
+void write_metrics(const std::filesystem::path& dir, const std::string& csv) {
+  const auto tmp = dir / "metrics.csv.partial";
+  std::ofstream(tmp) << csv;
+  std::filesystem::rename(tmp, dir / "metrics.csv");
+}
+
+int run_denoise(DenoiseOptions& o) {
+  apply_input_folder(o);
+  for (const auto& [name, value] : {std::pair{"--color", &o.color},
+                                    {"--albedo", &o.albedo},
+                                    {"--normal", &o.normal},
+                                    {"--depth", &o.depth},
+                                    {"--motion", &o.motion}})
+    if (value->empty()) throw CLI::ValidationError(name, "is required (or --input DIR from asvgf render --aovs)");
+  if (!o.gradient.empty() && o.method != "asvgf")
+    throw CLI::ValidationError("--gradient", "gradient samples are for --method asvgf only");
+  o.device.size = "1x1";  // the frames set the size
+  finish_scene_options(o.device);
+
+  const FramePattern color("--color", o.color), albedo("--albedo", o.albedo), normal("--normal", o.normal),
+      depth("--depth", o.depth), motion("--motion", o.motion);
+  const FramePattern gradient = o.gradient.empty() ? FramePattern() : FramePattern("--gradient", o.gradient);
+  const FramePattern reference = o.reference.empty() ? FramePattern() : FramePattern("--reference", o.reference);
+  const int available = count_frames(color, o.first);
+  if (available == 0)
+    throw render::ImageIoError(color.path(o.first).string() + " (color, frame " + std::to_string(o.first) +
+                               "): missing; nothing to denoise");
+  const int frames = o.frames > 0 ? o.frames : available;
+  if (frames > available)
+    throw render::ImageIoError(color.path(o.first + available).string() + " (color, frame " +
+                               std::to_string(o.first + available) + "): missing; --frames asks for " +
+                               std::to_string(frames));
+
+  const render::ExrImage first = read_frame(color, o.first, {"color", 0, 0, {"R", "G", "B"}});
+  const std::uint32_t w = first.width, h = first.height, gw = (w + 2) / 3, gh = (h + 2) / 3;
+  auto device = open_device(o.device);
+  asvgf::DenoiserConfig config;
+  config.width = w;
+  config.height = h;
+  config.method = o.method == "ema"    ? DenoiseMethod::Ema
+                  : o.method == "svgf" ? DenoiseMethod::Svgf
+                                       : DenoiseMethod::Asvgf;
+  config.settings = o.device.denoise;
+  config.depth_gradient_given = o.depth_gradient;
+  asvgf::Denoiser denoiser(*device, config);
+
+  const auto usage =
+      hal::ImageUsage::Sampled | hal::ImageUsage::Storage | hal::ImageUsage::CopySrc | hal::ImageUsage::CopyDst;
+  auto create = [&](const char* name, std::uint32_t iw, std::uint32_t ih, hal::Format format) {
+    return device->create_image({name, iw, ih, format, usage});
+  };
+  const hal::Format F32 = hal::Format::RGBA32F;
+  struct Input {
+    const FramePattern* pattern;
+    BufferSpec spec;
+    hal::ImageHandle image;
+  };
+  std::vector<Input> inputs = {
+      {&color, {"color", w, h, {"R", "G", "B"}}, create("color", w, h, F32)},
+      {&albedo, {"albedo", w, h, {"R", "G", "B"}}, create("albedo", w, h, F32)},
+      {&normal, {"normal", w, h, {"R", "G", "B"}}, create("normal", w, h, F32)},
+      {&depth,
+       {"depth", w, h, o.depth_gradient ? std::vector<std::string>{"R", "G"} : std::vector<std::string>{"R"}},
+       create("depth", w, h, F32)},
+      {&motion, {"motion", w, h, {"R", "G"}}, create("motion", w, h, F32)},
+  };
+  const hal::ImageHandle gradient_image = gradient.empty() ? hal::ImageHandle{} : create("gradient", gw, gh, F32);
+  const hal::ImageHandle radiance = create("radiance", w, h, F32);
+  const hal::ImageHandle display = create("display", w, h, hal::Format::RGBA8Unorm);
+
+  const std::filesystem::path dir(o.out);
+  std::filesystem::create_directories(dir);
+  if (!o.quiet)
+    std::fprintf(stderr, "asvgf denoise: %d frames of %ux%u from %s, %s%s on %s\n", frames, w, h, o.color.c_str(),
+                 o.method.c_str(),
+                 o.method == "asvgf"
+                     ? (gradient.empty() ? " without gradient samples (constant alpha)" : " with gradient samples")
+                     : "",
+                 device->adapter().name.c_str());
+
+  std::ostringstream csv;
+  csv << "frame,method,relmse,ssim,gpu_ms\n";
+  Progress progress("denoising", frames, o.quiet);
+  std::vector<float> hdr(std::size_t(w) * h * 4);
+  std::vector<std::uint8_t> ldr(std::size_t(w) * h * 4);
+  std::vector<float> previous_depth;
+  for (int i = 0; i < frames; ++i) {
+    const int f = o.first + i;
+    std::vector<render::ExrImage> images;
+    for (auto& in : inputs) {
+      images.push_back(read_frame(*in.pattern, f, in.spec));
+      device->upload_image(in.image, std::as_bytes(std::span(images.back().rgba)));
+    }
+    render::ExrImage& depth_now = images[3];
+    if (i > 0 && o.motion_check) {
+      const MotionCheck check = check_motion(previous_depth, depth_now.rgba, images[4].rgba, w, h);
+      if (check.problem)
+        throw render::ImageIoError(motion.path(f).string() + " (motion, frame " + std::to_string(f) +
+                                   "): " + *check.problem + " (--no-motion-check skips this test)");
+    }
+    previous_depth = std::move(depth_now.rgba);
+    std::optional<DenoiserImage> samples;
+    if (!gradient.empty()) {
+      const render::ExrImage img = read_frame(gradient, f, {"gradient", gw, gh, {"R", "G"}});
+      if (has_gradient_samples(img)) {
+        device->upload_image(gradient_image, std::as_bytes(std::span(img.rgba)));
+        samples = DenoiserImage{gradient_image, F32, hal::State::CopyDst};
+      }
+    }
+    const auto uploaded = hal::State::CopyDst;
+    const auto after = i == 0 ? hal::State::Undefined : hal::State::CopySrc;
+    denoiser.denoise(
+        {{inputs[0].image, F32, uploaded},
+         {inputs[1].image, F32, uploaded},
+         {inputs[2].image, F32, uploaded},
+         {inputs[3].image, F32, uploaded},
+         {inputs[4].image, F32, uploaded},
+         samples},
+        {{radiance, F32, after}, DenoiserImage{display, hal::Format::RGBA8Unorm, after}, hal::State::CopySrc});
+    device->read_image(radiance, std::as_writable_bytes(std::span(hdr)));
+    device->read_image(display, std::as_writable_bytes(std::span(ldr)));
+    render::write_exr(dir / frame_file("frame", f, "exr"), w, h, hdr);
+    render::write_png(dir / frame_file("frame", f, "png"), w, h, ldr);
+
+    double gpu_ms = 0;
+    bool timed = true;
+    for (const auto& t : denoiser.timings()) {
+      timed = timed && t.gpu_ms.has_value();
+      gpu_ms += t.gpu_ms.value_or(0.0);
+    }
+    std::string note;
+    if (!reference.empty()) {
+      const render::ExrImage ref = read_frame(reference, f, {"reference", w, h, {"R", "G", "B"}});
+      const double relmse = render::relative_mse(hdr, ref.rgba);
+      csv << f << "," << o.method << "," << std::to_string(relmse) << ","
+          << std::to_string(render::ssim(hdr, ref.rgba, w, h)) << "," << (timed ? std::to_string(gpu_ms) : "") << "\n";
+      note = "relMSE " + std::to_string(relmse);
+    }
+    progress.step(i + 1, note);
+  }
+  if (!reference.empty()) write_metrics(dir, csv.str());
+  for (auto& in : inputs) device->destroy(in.image);
+  if (gradient_image) device->destroy(gradient_image);
+  device->destroy(radiance);
+  device->destroy(display);
+
+  const auto s = denoiser.sanitised();
+  if (!o.quiet) {
+    std::fprintf(stderr,
+                 "sanitised: %u samples with NaN and %u with Inf dropped, %u clamped to the fp16 maximum 65504, %u "
+                 "output pixels written as 0 (not finite)\n",
+                 s.nan_samples, s.inf_samples, s.clamped_samples, s.zeroed_outputs);
+    std::fprintf(stderr, "results: %s/frame_NNNN.{exr,png}%s\n", dir.string().c_str(),
+                 reference.empty() ? "" : ", metrics.csv");
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> add_denoise_command(CLI::App& app) {
+  auto o = std::make_shared<DenoiseOptions>();
+  auto* cmd = app.add_subcommand(
+      "denoise",
+      "Denoise a frame sequence from per-buffer EXR files (e.g. from asvgf render --aovs); write EXR and PNG");
+  cmd->add_option(
+      "--input", o->input,
+      "Folder written by asvgf render --aovs: reads its {color,albedo,normal,depth,motion,gradient}_NNNN.exr");
+  cmd->add_option("--color", o->color, "Noisy radiance divided by albedo (demodulated), e.g. frames/color_%04d.exr");
+  cmd->add_option("--albedo", o->albedo, "Albedo the output is multiplied by (RGB)");
+  cmd->add_option("--normal", o->normal, "World-space normals (RGB = xyz; 0 = background)");
+  cmd->add_option("--depth", o->depth,
+                  "Linear view depth in R (0 = background); G = its gradient with --depth-gradient");
+  cmd->add_option("--motion", o->motion, "Motion in pixels, previous minus current position (RG)");
+  cmd->add_option("--gradient", o->gradient,
+                  "A-SVGF gradient samples, ceil(w/3) x ceil(h/3): R = last frame's luminance, G = pixel 0..8 in the "
+                  "3x3 stratum or -1 (include/asvgf/denoiser.hpp)");
+  cmd->add_flag("--depth-gradient", o->depth_gradient, "The depth files' G channel holds max(|dz/dx|, |dz/dy|)");
+  cmd->add_flag("!--no-motion-check", o->motion_check,
+                "Do not test whether the motion vectors follow the convention (checked from frame to frame: the "
+                "previous frame's depth where they point should match)");
+  cmd->add_option("--reference", o->reference, "Reference frames (RGB radiance): also write metrics.csv");
+  cmd->add_option("--method", o->method, "ema, svgf or asvgf")
+      ->check(CLI::IsMember({"ema", "svgf", "asvgf"}))
+      ->capture_default_str();
+  cmd->add_option("--first-frame", o->first, "Number of the first frame")
+      ->check(CLI::Range(0, 99999999))
+      ->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Frames to denoise (default: every frame --color has from the first on)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--out", o->out, "Output folder")->capture_default_str();
+  cmd->add_flag("--quiet", o->quiet, "No progress output");
+  add_device_options(*cmd, o->device);
+  add_denoise_options(*cmd, o->device);
+  return [o] { return run_denoise(*o); };
+}
+
+}  // namespace asvgf::cli

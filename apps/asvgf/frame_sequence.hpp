@@ -1,0 +1,42 @@
+// Frame sequences on disk for `asvgf denoise`: printf-style file patterns (frames/color_%04d.exr)
+// and one frame's EXR checked against what the denoiser needs (size, channels, finite values), with
+// errors that name the file.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "render/image_io.hpp"
+
+namespace asvgf::cli {
+
+// A file pattern with exactly one integer conversion (%d, %4d, %04d; %% is a literal %). Throws
+// CLI::ValidationError naming `option` otherwise.
+class FramePattern {
+ public:
+  FramePattern() = default;
+  FramePattern(std::string option, std::string pattern);
+  std::filesystem::path path(int frame) const;
+  bool empty() const { return pattern_.empty(); }
+  const std::string& option() const { return option_; }
+
+ private:
+  std::string option_, pattern_;
+};
+
+// What a buffer must hold: its name in messages, size, and the channels it must declare.
+struct BufferSpec {
+  std::string name;                     // "color", "depth", ...
+  std::uint32_t width = 0, height = 0;  // 0: any (the first color frame sets the size)
+  std::vector<std::string> channels;    // e.g. {"R", "G"}
+};
+// Reads frame `frame` of `pattern` and checks it against `spec`. Throws render::ImageIoError naming
+// the file: missing, unreadable, another size, a missing channel, a NaN or Inf (with its pixel).
+render::ExrImage read_frame(const FramePattern& pattern, int frame, const BufferSpec& spec);
+
+// Frames first, first+1, ... while `pattern` has a file; 0 when the first is missing.
+int count_frames(const FramePattern& pattern, int first);
+
+}  // namespace asvgf::cli

@@ -1,0 +1,151 @@
+// `asvgf denoise`'s input checks: file patterns, what a frame's EXR must hold (errors naming the
+// file, the channel and the pixel), and the motion-convention check on synthetic frames.
+#include <doctest/doctest.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "frame_sequence.hpp"
+#include "motion_check.hpp"
+#include "render/image_io.hpp"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+#pragma GCC diagnostic ignored "-Wshadow"
+#include <tinyexr.h>
+#pragma GCC diagnostic pop
+
+using namespace asvgf;
+
+namespace {
+
+std::filesystem::path temp_dir() {
+  auto dir = std::filesystem::temp_directory_path() / "asvgf_denoise_inputs_test";
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// An EXR with exactly the named float channels (SaveEXR always writes RGB(A) or one channel),
+// written with the low-level API so that any channel set and any value (NaN too) can be stored.
+void write_channels(const std::filesystem::path& path, int w, int h, const std::vector<std::string>& names,
+                    const std::vector<std::vector<float>>& planes) {
+  EXRHeader header;
+  InitEXRHeader(&header);
+  EXRImage image;
+  InitEXRImage(&image);
+  std::vector<const float*> pointers;
+  for (const auto& p : planes) pointers.push_back(p.data());
+  image.num_channels = static_cast<int>(names.size());
+  image.images = reinterpret_cast<unsigned char**>(const_cast<float**>(pointers.data()));
+  image.width = w;
+  image.height = h;
+  std::vector<EXRChannelInfo> infos(names.size());
+  std::vector<int> types(names.size(), TINYEXR_PIXELTYPE_FLOAT);
+  for (std::size_t i = 0; i < names.size(); ++i)
+    std::snprintf(infos[i].name, sizeof infos[i].name, "%s", names[i].c_str());
+  header.num_channels = static_cast<int>(names.size());
+  header.channels = infos.data();
+  header.pixel_types = types.data();
+  header.requested_pixel_types = types.data();
+  const char* err = nullptr;
+  REQUIRE(SaveEXRImageToFile(&image, &header, path.c_str(), &err) == TINYEXR_SUCCESS);
+}
+
+std::string error_of(const cli::FramePattern& pattern, int frame, const cli::BufferSpec& spec) {
+  try {
+    cli::read_frame(pattern, frame, spec);
+  } catch (const render::ImageIoError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("denoise inputs: a pattern needs exactly one frame number and expands it") {
+  CHECK(cli::FramePattern("--color", "f/color_%04d.exr").path(7) == std::filesystem::path("f/color_0007.exr"));
+  CHECK(cli::FramePattern("--color", "c%d_100%%.exr").path(12) == std::filesystem::path("c12_100%.exr"));
+  CHECK_THROWS_AS(cli::FramePattern("--color", "color.exr"), CLI::ValidationError);
+  CHECK_THROWS_AS(cli::FramePattern("--color", "%d_%d.exr"), CLI::ValidationError);
+  CHECK_THROWS_AS(cli::FramePattern("--color", "%s.exr"), CLI::ValidationError);
+  CHECK_THROWS_AS(cli::FramePattern("--color", "%0100d.exr"), CLI::ValidationError);
+}
+
+TEST_CASE("denoise inputs: a frame's EXR is refused naming the file for a missing channel, a size or a NaN") {
+  const auto dir = temp_dir();
+  const int w = 5, h = 3;
+  std::vector<float> plane(w * h, 1.0f);
+  write_channels(dir / "one_0000.exr", w, h, {"R"}, {plane});
+  write_channels(dir / "rg_0000.exr", w, h, {"G", "R"}, {plane, plane});
+  std::vector<float> with_nan = plane;
+  with_nan[2 * w + 3] = std::numeric_limits<float>::quiet_NaN();
+  write_channels(dir / "nan_0000.exr", w, h, {"G", "R"}, {with_nan, plane});  // NaN in G at (3, 2)
+
+  const cli::FramePattern one("--depth", (dir / "one_%04d.exr").string());
+  const cli::FramePattern rg("--motion", (dir / "rg_%04d.exr").string());
+  const cli::FramePattern nan("--motion", (dir / "nan_%04d.exr").string());
+  CHECK(error_of(one, 0, {"depth", w, h, {"R"}}).empty());
+  CHECK(error_of(rg, 0, {"motion", w, h, {"R", "G"}}).empty());
+  CHECK(error_of(one, 0, {"motion", w, h, {"R", "G"}}).find("one_0000.exr (motion, frame 0): no channel G") !=
+        std::string::npos);
+  CHECK(error_of(rg, 0, {"motion", 6, 3, {"R", "G"}}).find("5x3, expected 6x3") != std::string::npos);
+  CHECK(error_of(nan, 0, {"motion", w, h, {"R", "G"}}).find("NaN in channel G at pixel (3, 2)") != std::string::npos);
+  CHECK(error_of(rg, 1, {"motion", w, h, {"R", "G"}}).find("rg_0001.exr (motion, frame 1): missing") !=
+        std::string::npos);
+  CHECK(cli::count_frames(rg, 0) == 1);
+  CHECK(cli::count_frames(rg, 1) == 0);
+}
+
+namespace {
+
+// Two frames of a scene sliding right by `shift` pixels: a staircase of depths (1, 2, 3, ...,
+// changing every 4 columns) so that landing on the wrong column gives another depth.
+struct Frames {
+  int w = 48, h = 16;
+  std::vector<float> previous_depth, depth, motion;
+};
+Frames sliding(int shift, float mx_scale, float my) {
+  Frames f;
+  auto z = [](int x) { return 1.0f + static_cast<float>(((x % 40) + 40) % 40 / 4); };
+  f.previous_depth.assign(f.w * f.h * 4, 0.0f);
+  f.depth = f.motion = f.previous_depth;
+  for (int y = 0; y < f.h; ++y)
+    for (int x = 0; x < f.w; ++x) {
+      const std::size_t i = (std::size_t(y) * f.w + x) * 4;
+      f.previous_depth[i] = z(x);
+      f.depth[i] = z(x - shift);                            // what was at x - shift is now at x
+      f.motion[i] = -static_cast<float>(shift) * mx_scale;  // previous minus current, scaled
+      f.motion[i + 1] = my;
+    }
+  return f;
+}
+
+}  // namespace
+
+TEST_CASE("denoise inputs: the motion check accepts the convention and names the sign and unit mistakes") {
+  const Frames right = sliding(6, 1.0f, 0.0f);
+  const auto ok = cli::check_motion(right.previous_depth, right.depth, right.motion, 48, 16);
+  CHECK(ok.moving_pixels == 48 * 16);
+  CHECK(!ok.problem);
+  CHECK(ok.as_given.consistent > 0.8);
+
+  const Frames negated = sliding(6, -1.0f, 0.0f);
+  const auto neg = cli::check_motion(negated.previous_depth, negated.depth, negated.motion, 48, 16);
+  REQUIRE(neg.problem);
+  CHECK(neg.best.convention == "negated");
+  CHECK(neg.problem->find("previous minus current") != std::string::npos);
+
+  const Frames uv = sliding(6, 1.0f / 48.0f, 0.0f);
+  const auto in_uv = cli::check_motion(uv.previous_depth, uv.depth, uv.motion, 48, 16);
+  REQUIRE(in_uv.problem);
+  CHECK(in_uv.best.convention == "in UV units");
+
+  const Frames still = sliding(0, 1.0f, 0.0f);
+  const auto none = cli::check_motion(still.previous_depth, still.depth, still.motion, 48, 16);
+  CHECK(none.moving_pixels == 0);
+  CHECK(!none.problem);
+}
