@@ -53,7 +53,7 @@ void apply_input_folder(DenoiseOptions& o) {
   fill(o.normal, "normal");
   fill(o.depth, "depth");
   fill(o.motion, "motion");
-  if (o.method == "asvgf" && o.gradient.empty() &&
+  if (o.method == "asvgf" && o.device.gradient_source == "reshaded" && o.gradient.empty() &&
       std::filesystem::exists(dir / frame_file("gradient", o.first, "exr")))
     fill(o.gradient, "gradient");
   o.depth_gradient = true;
@@ -82,6 +82,8 @@ int run_denoise(DenoiseOptions& o) {
     if (value->empty()) throw CLI::ValidationError(name, "is required (or --input DIR from asvgf render --aovs)");
   if (!o.gradient.empty() && o.method != "asvgf")
     throw CLI::ValidationError("--gradient", "gradient samples are for --method asvgf only");
+  if (!o.gradient.empty() && o.device.gradient_source == "reprojected")
+    throw CLI::ValidationError("--gradient", "--gradient-source reprojected estimates the gradient itself");
   o.device.size = "1x1";  // the frames set the size
   finish_scene_options(o.device);
 
@@ -141,9 +143,10 @@ int run_denoise(DenoiseOptions& o) {
   if (!o.quiet)
     std::fprintf(stderr, "asvgf denoise: %d frames of %ux%u from %s, %s%s on %s\n", frames, w, h, o.color.c_str(),
                  o.method.c_str(),
-                 o.method == "asvgf"
-                     ? (gradient.empty() ? " without gradient samples (constant alpha)" : " with gradient samples")
-                     : "",
+                 o.method != "asvgf"                         ? ""
+                 : o.device.gradient_source == "reprojected" ? " with the gradient from reprojected luminance"
+                 : gradient.empty()                          ? " without gradient samples (constant alpha)"
+                                                             : " with gradient samples",
                  device->adapter().name.c_str());
 
   std::ostringstream csv;

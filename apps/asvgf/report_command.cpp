@@ -88,6 +88,8 @@ std::vector<report::RunSpec> all_runs(std::uint32_t max_accumulation_spp) {
   add("ema-0.05", "EMA, constant α 0.05 (ghosting)", Method::Ema, [](report::RunSpec& s) { s.denoise.alpha = 0.05f; });
   add("svgf", "SVGF: constant α 0.2, 5 à-trous iterations (B3 5x5)", Method::Svgf, none);
   add("asvgf", "A-SVGF: adaptive α, 5 à-trous iterations (B3 5x5)", Method::Asvgf, none);
+  add("asvgf-reproj", "A-SVGF, gradient from reprojected noisy luminance (no re-shading; Q2RTX's LF)", Method::Asvgf,
+      [](report::RunSpec& s) { s.denoise.gradient_source = passes::GradientSource::Reprojected; });
   add("asvgf-box9", "A-SVGF, the seed's 3x3 box kernel, 9 iterations", Method::Asvgf, [](report::RunSpec& s) {
     s.denoise.kernel = passes::AtrousKernel::Box;
     s.denoise.atrous_iterations = 9;

@@ -71,6 +71,11 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--gradient-iterations", d.gradient_iterations, "A-trous iterations over the gradient (Q2RTX 3)")
       ->check(CLI::Range(0, 8))
       ->capture_default_str();
+  cmd.add_option("--gradient-source", o.gradient_source,
+                 "A-SVGF's gradient: reshaded (the renderer re-shades last frame's samples; paper) or reprojected "
+                 "(estimated from reprojected noisy luminance, no renderer help; Q2RTX)")
+      ->check(CLI::IsMember({"reshaded", "reprojected"}))
+      ->capture_default_str();
   cmd.add_option("--history-cap", d.history_cap, "Maximum history length in frames")
       ->check(CLI::Range(1.0, 4096.0))
       ->capture_default_str();
@@ -87,6 +92,8 @@ void finish_scene_options(SceneOptions& o) {
   o.width = w;
   o.height = h;
   o.denoise.kernel = o.kernel == "box" ? passes::AtrousKernel::Box : passes::AtrousKernel::B3Spline;
+  o.denoise.gradient_source =
+      o.gradient_source == "reprojected" ? passes::GradientSource::Reprojected : passes::GradientSource::Reshaded;
   if (o.denoise.history_tap >= std::max(1, o.denoise.atrous_iterations) && o.denoise.atrous_iterations > 0)
     throw CLI::ValidationError("--history-tap", "must be below --atrous-iterations");
 }

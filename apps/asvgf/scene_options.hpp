@@ -24,6 +24,7 @@ struct SceneOptions {
   std::uint32_t max_bounces = 4;
   passes::DenoiseSettings denoise;
   std::string kernel = "b3spline";
+  std::string gradient_source = "reshaded";
 };
 
 // Registers --scene --animation --method --size --backend --device --software-bvh --validation

@@ -15,6 +15,11 @@ namespace asvgf {
 
 enum class AtrousKernel : std::uint32_t { B3Spline = 0, Box = 1 };  // values are the shader's `kernel`
 enum class Tonemap : std::uint32_t { Clamp = 0, Aces = 1 };          // values are the shader's `tonemap`
+// Where A-SVGF's temporal gradient comes from. Reshaded: the renderer re-shades forward-projected
+// samples of last frame with last frame's random numbers (the A-SVGF paper; exact, needs the
+// renderer's help). Reprojected: estimated from this frame's noisy luminance against last frame's,
+// reprojected (Q2RTX's low-frequency gradient; no help needed, noisier).
+enum class GradientSource : std::uint32_t { Reshaded = 0, Reprojected = 1 };
 
 struct DenoiseSettings {
   float alpha = 0.2f;                          // colour blend factor (SVGF; the seed's figures use 0.2)
@@ -28,6 +33,7 @@ struct DenoiseSettings {
   float history_cap = 32.0f;                   // max history length (Falcor SVGF; Q2RTX 256)
   int history_tap = 0;                         // a-trous iteration whose output feeds the colour history (SVGF)
   bool adaptive = true;                        // A-SVGF's gradient-driven alpha; false: constant alpha
+  GradientSource gradient_source = GradientSource::Reshaded;  // A-SVGF's gradient (see above)
   float min_history = 4.0f;                    // below this, variance is estimated spatially (SVGF)
   float exposure = 1.0f;                       // composite: multiplier before the tone curve
   Tonemap tonemap = Tonemap::Aces;             // composite: ACES fit (Narkowicz 2015)

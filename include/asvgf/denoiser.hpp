@@ -30,7 +30,10 @@
 //                       renderer must have shaded that pixel of `illumination` at last frame's surface
 //                       point, forward-projected into this frame, with last frame's random numbers
 //                       (Schied et al. 2018, section 4). A frame without gradient samples is treated
-//                       as a frame where nothing moved (constant alpha).
+//                       as a frame where nothing moved (constant alpha). A renderer that cannot
+//                       re-shade sets settings.gradient_source = GradientSource::Reprojected: the
+//                       denoiser then estimates the gradient from this frame's noisy luminance
+//                       against last frame's, reprojected, and ignores gradient_samples.
 //   radiance      out   RGBA32F storage image: the denoised radiance (re-modulated by albedo); never
 //                       NaN or Inf (non-finite pixels are written as 0 and counted).
 //   display       out   optional RGBA8Unorm storage image: exposure, tone curve, sRGB encoding.

@@ -135,7 +135,8 @@ void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, cons
 
   const bool adaptive = impl_->config.method == DenoiseMethod::Asvgf;
   std::optional<ResourceId> gradient_samples;
-  if (adaptive && in.gradient_samples) gradient_samples = import("gradient_samples", *in.gradient_samples, gw, gh);
+  if (adaptive && impl_->config.settings.gradient_source == GradientSource::Reshaded && in.gradient_samples)
+    gradient_samples = import("gradient_samples", *in.gradient_samples, gw, gh);
   const passes::Filter filter =
       impl_->config.method == DenoiseMethod::Ema ? passes::Filter::Temporal : passes::Filter::Spatiotemporal;
   passes::add_denoiser(g, impl_->pipelines,

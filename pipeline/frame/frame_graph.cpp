@@ -61,7 +61,8 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
 
   // A-SVGF's temporal gradient: forward-projected samples, then delta and Delta at 1/3 resolution.
   const std::string not_moved = "nothing in the scene, camera or lights moved since the last frame";
-  const bool adaptive = denoise.adaptive;
+  // Re-shaded samples only for GradientSource::Reshaded; Reprojected estimates inside add_denoiser.
+  const bool adaptive = denoise.adaptive && denoise.gradient_source == passes::GradientSource::Reshaded;
   const bool gradients = adaptive && s.scene_moved;
   std::optional<ResourceId> gradient_seeds;
   ResourceId gradient_prev = 0;

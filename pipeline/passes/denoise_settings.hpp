@@ -8,6 +8,7 @@ namespace asvgf::passes {
 
 using asvgf::AtrousKernel;
 using asvgf::DenoiseSettings;
+using asvgf::GradientSource;
 using asvgf::Tonemap;
 
 }  // namespace asvgf::passes

@@ -26,8 +26,10 @@ struct DenoiserInputs {
   graph::ResourceId counters = 0;      // SanitizeCounters::import of this graph
   graph::ResourceId hdr = 0;           // written by composite: RGBA32F linear radiance
   graph::ResourceId display = 0;       // written by composite: RGBA8 tonemapped sRGB
-  // A-SVGF: last frame's luminance forward-projected into this frame's 3x3 strata (ceil(w/3) x
-  // ceil(h/3), RGBA32F, xy used; gradient_select/gradient_resolve write it). Absent: constant alpha.
+  // A-SVGF with GradientSource::Reshaded: last frame's luminance forward-projected into this
+  // frame's 3x3 strata (ceil(w/3) x ceil(h/3), RGBA32F, xy used; gradient_select/gradient_resolve
+  // write it). Absent: constant alpha. With GradientSource::Reprojected the chain estimates the
+  // gradient itself (gradient_reprojected) and ignores this and the skip reason.
   std::optional<graph::ResourceId> gradient_prev;
   // Not empty: the gradient passes are declared but left out for this reason (nothing moved), and
   // the temporal pass uses constant alpha this frame.

@@ -1,8 +1,10 @@
 #include "passes/gradient.hpp"
 
 #include <cstddef>
+#include <cstring>
 
 #include "shaders/gradient.hpp"
+#include "shaders/gradient_reprojected.hpp"
 
 namespace asvgf::passes {
 namespace {
@@ -22,6 +24,29 @@ graph::PassBuilder add_gradient(graph::RenderGraph& graph, PipelineCache& pipeli
       graph, "gradient", shader, pipeline,
       {{"illumination", r.illumination}, {"gradient_prev", r.gradient_prev}, {"gradient", r.gradient}}, to_bytes(u),
       {u.gradient_width, u.gradient_height, 1});
+}
+
+graph::PassBuilder add_gradient_reprojected(graph::RenderGraph& graph, PipelineCache& pipelines,
+                                            const ReprojectedGradientResources& r) {
+  using Params = asvgf::shaders::gradient_reprojected_uniforms::Params;
+  const auto& full = graph.resource(r.illumination);
+  const auto& out = graph.resource(r.gradient);
+  const Params u{full.width, full.height, out.width, out.height, 0u};
+  const hal::ShaderInfo& shader = asvgf::shaders::gradient_reprojected;
+  return add_compute_pass(graph, "gradient_reprojected", shader, pipelines.get<Params>(shader),
+                          {{"illumination", r.illumination},
+                           {"motion", r.motion},
+                           {"depth_normal", r.depth_normal},
+                           {"prev_depth_normal", r.depth_normal, true},
+                           {"prev_noisy_luminance", r.luminance, true},
+                           {"noisy_luminance", r.luminance},
+                           {"gradient", r.gradient}},
+                          to_bytes(u), {u.gradient_width, u.gradient_height, 1},
+                          [r](graph::PassContext& ctx, std::vector<std::byte>& uniforms) {
+                            const std::uint32_t valid =
+                                ctx.history_valid(r.depth_normal) && ctx.history_valid(r.luminance);
+                            std::memcpy(uniforms.data() + offsetof(Params, history_valid), &valid, sizeof valid);
+                          });
 }
 
 }  // namespace asvgf::passes

@@ -72,6 +72,37 @@ ImageD gradient(const ImageD& illumination, const ImageD& gradient_prev) {
   return out;
 }
 
+ReprojectedGradientResult gradient_reprojected(const ReprojectedGradientInputs& in) {
+  const ImageD& illum = *in.illumination;
+  const int w = illum.width, h = illum.height;
+  ReprojectedGradientResult out{ImageD((w + 2) / 3, (h + 2) / 3, 4), ImageD(w, h, 4)};
+  for (int sy = 0; sy < out.gradient.height; ++sy)
+    for (int sx = 0; sx < out.gradient.width; ++sx) {
+      double sum_cur = 0, sum_prev = 0;
+      for (int i = 0; i < 9; ++i) {
+        const int x = 3 * sx + i % 3, y = 3 * sy + i / 3;
+        if (!illum.inside(x, y)) continue;
+        const double r = illum.at(x, y, 0), g = illum.at(x, y, 1), b = illum.at(x, y, 2);
+        const bool finite = !any_not_finite(r, g, b);
+        const double l = finite ? luminance(clamp_sample(r), clamp_sample(g), clamp_sample(b)) : 0.0;
+        out.luminance.at(x, y, 0) = l;
+        const Surface cur = surface_at(*in.depth_normal, x, y);
+        if (!in.history_valid || !finite || !cur.hit()) continue;
+        const double qx = x + 0.5 + in.motion->at(x, y, 0), qy = y + 0.5 + in.motion->at(x, y, 1);
+        if (!(qx >= 0 && qy >= 0 && qx < w && qy < h)) continue;
+        const int px = static_cast<int>(qx), py = static_cast<int>(qy);
+        if (!reprojection_consistent(cur, surface_at(*in.prev_depth_normal, px, py))) continue;
+        const double lp = in.prev_luminance->at(px, py, 0);
+        if (!std::isfinite(lp)) continue;
+        sum_cur += l;
+        sum_prev += std::clamp(lp, 0.0, kFp16Max);
+      }
+      out.gradient.at(sx, sy, 0) = clamp_fp16(sum_cur - sum_prev);
+      out.gradient.at(sx, sy, 1) = clamp_fp16(std::max(sum_cur, sum_prev));
+    }
+  return out;
+}
+
 ImageD gradient_atrous(const ImageD& in, const ImageD& dn, const GradientAtrousParams& params) {
   ImageD out(in.width, in.height, 4);
   auto guide = [&](int sx, int sy) {

@@ -20,6 +20,21 @@ ImageD pack_surface(const ImageD& depth, const ImageD& normal, bool depth_gradie
 // gradient.comp: (delta, Delta) per 3x3 stratum, ceil(w/3) x ceil(h/3).
 ImageD gradient(const ImageD& illumination, const ImageD& gradient_prev);
 
+struct ReprojectedGradientInputs {
+  const ImageD* illumination = nullptr;
+  const ImageD* motion = nullptr;
+  const ImageD* depth_normal = nullptr;
+  const ImageD* prev_depth_normal = nullptr;
+  const ImageD* prev_luminance = nullptr;  // 1 channel used
+  bool history_valid = true;
+};
+struct ReprojectedGradientResult {
+  ImageD gradient;   // (delta, Delta, 0, 0) per stratum
+  ImageD luminance;  // this frame's, per pixel (channel 0)
+};
+// gradient_reprojected.comp
+ReprojectedGradientResult gradient_reprojected(const ReprojectedGradientInputs& in);
+
 struct GradientAtrousParams {
   int step = 1;
   double sigma_z = 1, sigma_n = 128;

@@ -149,7 +149,8 @@ FrameImages Renderer::render(int frame) {
   const std::array<std::uint32_t, 4> zero{};
   device_.upload_buffer(targets_.ray_counter, 0, std::as_bytes(std::span(zero)));
   targets_.ray_counter_state = hal::State::CopyDst;
-  const bool gradient_ran = settings_.method == frame::Method::Asvgf && moved && !first;
+  const bool gradient_ran = settings_.method == frame::Method::Asvgf &&
+                            settings_.denoise.gradient_source == passes::GradientSource::Reshaded && moved && !first;
   for (std::uint32_t b = 0; b < batches; ++b) {
     frame::FrameSettings s;
     static_cast<frame::FrameConfig&>(s) = settings_;

@@ -184,6 +184,22 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
     out << "\n![crops while the scene changes](crops_change.png)\n\n";
   }
 
+  out << "### A-SVGF without the renderer's help\n\n";
+  const auto gradient_runs = md.pick({"svgf", "asvgf", "asvgf-reproj"});
+  if (!find_run(d, "asvgf") || !find_run(d, "asvgf-reproj")) {
+    out << "Not run (see --methods).\n\n";
+  } else {
+    out << "`asvgf` takes its temporal gradient from re-shaded samples: the path tracer shades one pixel per 3x3 "
+           "stratum at last frame's surface point with last frame's random numbers (A-SVGF, Schied et al. 2018), "
+           "which a renderer must be built for. `asvgf-reproj` estimates it without that help "
+           "(`--gradient-source reprojected`): per stratum, this frame's noisy luminance against last frame's "
+           "noisy luminance reprojected through the motion vectors, as Q2RTX's low-frequency gradient; the two "
+           "carry independent noise, so even a static scene shows a gradient of the order of the noise. `svgf` "
+           "(no gradient) bounds it from the other side.\n\n";
+    md.run_table(gradient_runs);
+    if (d.change) md.frame_table(gradient_runs, d.change->first - 1, std::min(d.change->last + 6, d.frames - 1));
+  }
+
   out << "## Per-frame error\n\n![relMSE per frame](relmse_per_frame.png)\n\n"
       << "![temporal error per frame](temporal_per_frame.png)\n\n![SSIM per frame](ssim_per_frame.png)\n\n";
 

@@ -208,6 +208,53 @@ TemporalCase random_temporal_case(std::uint32_t seed, int w, int h) {
 
 }  // namespace
 
+TEST_CASE("denoise passes: gradient_reprojected matches the CPU reference (luminance sums per stratum, history and NaN handled)") {
+  ValidatedDevice device;
+  passes::PipelineCache pipelines(*device);
+  for (const auto& size : kSizes) {
+    const int w = size[0], h = size[1], gw = (w + 2) / 3, gh = (h + 2) / 3;
+    CAPTURE(w);
+    const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
+    const TemporalCase c = random_temporal_case(53u + static_cast<std::uint32_t>(w), w, h);
+    Random r(71u + static_cast<std::uint32_t>(w));
+    ImageD prev_luminance(w, h, 1);
+    for (auto& v : prev_luminance.data) v = static_cast<float>(r.uniform(0, 4));
+    GraphHarness harness(*device);
+    ImageD gradient, luminance;
+    for (int frame = 0; frame < 2; ++frame) {
+      RenderGraph g;
+      const auto dn = g.add_image("depth_normal", uw, uh, F::RGBA32F, Lifetime::Persistent);
+      const auto lum = g.add_image("noisy_luminance", uw, uh, F::R32F, Lifetime::Persistent);
+      if (frame == 0) {
+        harness.fill(g, dn, c.prev_dn);
+        harness.fill(g, lum, prev_luminance);
+      } else {
+        harness.fill(g, dn, c.dn);
+        const auto illumination = harness.input(g, "illumination", c.illumination, F::RGBA32F);
+        const auto motion = harness.input(g, "motion", c.motion, F::RG32F);
+        const auto out = g.add_image("gradient", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh),
+                                     F::RGBA16F);
+        passes::add_gradient_reprojected(g, pipelines, {illumination, motion, dn, lum, out});
+        harness.readback(g, out, &gradient);
+        harness.readback(g, lum, &luminance);
+      }
+      harness.run(g);
+    }
+    const ImageD illumination = quantize(c.illumination, F::RGBA32F), motion = quantize(c.motion, F::RG32F);
+    const ImageD dn = quantize(c.dn, F::RGBA32F), prev_dn = quantize(c.prev_dn, F::RGBA32F);
+    const ImageD prev_lum = quantize(prev_luminance, F::R32F);
+    const auto want = ref::gradient_reprojected({&illumination, &motion, &dn, &prev_dn, &prev_lum, true});
+    // Sums of up to 9 luminances in [0, 4]: fp16 store of values up to 36.
+    DENOISE_CHECK_CLOSE(compare(gradient, want.gradient, 2, fp16_tolerance(36)), "gradient_reprojected");
+    DENOISE_CHECK_CLOSE(compare(luminance, want.luminance, 1, fp32_tolerance(4)), "noisy luminance");
+    // The case exercises the sums: strata with matched pixels (Delta > 0) whose luminance changed.
+    int changed = 0;
+    for (int y = 0; y < gh; ++y)
+      for (int x = 0; x < gw; ++x) changed += want.gradient.at(x, y, 1) > 0 && want.gradient.at(x, y, 0) != 0;
+    CHECK(changed > 0);
+  }
+}
+
 TEST_CASE("denoise passes: temporal pass matches the CPU reference (constant and adaptive alpha, dropped samples counted)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
