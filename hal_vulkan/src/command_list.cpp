@@ -72,19 +72,25 @@ VulkanCommandList::VulkanCommandList(VulkanDevice& device, std::string name) : d
   device_.set_name(VK_OBJECT_TYPE_COMMAND_BUFFER, reinterpret_cast<std::uint64_t>(cmd_), name_);
 }
 
+VulkanCommandList::VulkanCommandList(VulkanDevice& device, std::string name, VkCommandBuffer external)
+    : device_(device), name_(std::move(name)), cmd_(external), phase_(Phase::Recording), external_(true) {
+  if (!external) throw Error(ErrorKind::InvalidDescriptor, name_, "the command buffer to wrap is VK_NULL_HANDLE");
+}
+
 VulkanCommandList::~VulkanCommandList() {
   // The device may still execute it: a destructor cannot report, so it waits.
   if (serial_ > device_.completed_serial()) vkQueueWaitIdle(device_.queue());
   release_chunks();
-  vkDestroyCommandPool(device_.device(), pool_, nullptr);
+  if (!external_) vkDestroyCommandPool(device_.device(), pool_, nullptr);
 }
 
 void VulkanCommandList::reset() {
   device_.check_alive();
-  device_.check_result(vkResetCommandPool(device_.device(), pool_, 0), "vkResetCommandPool", name_);
+  // A wrapped command buffer is the caller's to reset; here only what the HAL holds for it is freed.
+  if (!external_) device_.check_result(vkResetCommandPool(device_.device(), pool_, 0), "vkResetCommandPool", name_);
   release_chunks();
   timer_writes_.clear();
-  phase_ = Phase::Initial;
+  phase_ = external_ ? Phase::Recording : Phase::Initial;
 }
 
 VkCommandBuffer VulkanCommandList::recording() {
@@ -98,6 +104,8 @@ VkCommandBuffer VulkanCommandList::recording() {
 }
 
 VkCommandBuffer VulkanCommandList::end_for_submit() {
+  if (external_)
+    throw Error(ErrorKind::InvalidUsage, name_, "a wrapped command buffer is ended and submitted by its owner");
   if (phase_ != Phase::Executable) {
     recording();
     device_.check_result(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer", name_);

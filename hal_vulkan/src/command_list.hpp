@@ -23,6 +23,9 @@ StateInfo state_info(State state);
 class VulkanCommandList final : public hal::CommandList {
  public:
   VulkanCommandList(VulkanDevice& device, std::string name);
+  // Records into the caller's command buffer, already begun (interop.hpp): never begun, ended,
+  // reset or submitted here.
+  VulkanCommandList(VulkanDevice& device, std::string name, VkCommandBuffer external);
   ~VulkanCommandList() override;
 
   void reset() override;
@@ -67,6 +70,7 @@ class VulkanCommandList final : public hal::CommandList {
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;
   Phase phase_ = Phase::Initial;
+  bool external_ = false;     // the caller's command buffer: no pool of ours
   std::uint64_t serial_ = 0;  // submission serial of the last submit; 0: never submitted
   std::vector<VkDeviceSize> chunks_;  // ring ranges this list owns
   VkDeviceSize chunk_begin_ = 0, chunk_used_ = 0, chunk_size_ = 0;

@@ -121,6 +121,11 @@ VulkanDevice::VulkanDevice(const DeviceOptions& options) {
                 "ray queries were required but the adapter lacks VK_KHR_ray_query / VK_KHR_acceleration_structure");
 
   create_logical_device(options);
+  load_functions();
+  create_shared_objects();
+}
+
+void VulkanDevice::create_shared_objects() {
   allocator_ = std::make_unique<MemoryAllocator>(physical_, device_, adapter_.capabilities.acceleration_structures);
 
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -259,7 +264,10 @@ void VulkanDevice::create_logical_device(const DeviceOptions& options) {
   caps.acceleration_structures = accel;
   caps.ray_query = ray_query;
   caps.fp16_storage = v11_have.storageBuffer16BitAccess == VK_TRUE;
+}
 
+void VulkanDevice::load_functions() {
+  const bool accel = adapter_.capabilities.acceleration_structures;
   auto load = [&](const char* name) { return vkGetDeviceProcAddr(device_, name); };
   if (accel) {
     fn_.create_accel = reinterpret_cast<PFN_vkCreateAccelerationStructureKHR>(load("vkCreateAccelerationStructureKHR"));
@@ -288,7 +296,7 @@ VulkanDevice::~VulkanDevice() {
   }
   for (auto& [id, i] : images.all()) {
     vkDestroyImageView(device_, i.view, nullptr);
-    vkDestroyImage(device_, i.image, nullptr);
+    if (i.owned) vkDestroyImage(device_, i.image, nullptr);
     allocator_->free(i.memory);
   }
   for (auto& [id, s] : binding_sets.all()) vkDestroyDescriptorPool(device_, s.pool, nullptr);
@@ -305,7 +313,7 @@ VulkanDevice::~VulkanDevice() {
     allocator_.reset();
   }
   if (transfer_pool_) vkDestroyCommandPool(device_, transfer_pool_, nullptr);
-  vkDestroyDevice(device_, nullptr);
+  if (owns_device_) vkDestroyDevice(device_, nullptr);
 }
 
 void VulkanDevice::check_alive() const {
@@ -394,7 +402,7 @@ void VulkanDevice::destroy(BufferHandle handle) {
 void VulkanDevice::destroy(ImageHandle handle) {
   ImageObject& i = images.get(handle.id, "image");
   vkDestroyImageView(device_, i.view, nullptr);
-  vkDestroyImage(device_, i.image, nullptr);
+  if (i.owned) vkDestroyImage(device_, i.image, nullptr);
   allocator_->free(i.memory);
   images.erase(handle.id);
 }

@@ -13,6 +13,7 @@
 
 #include "hal/device.hpp"
 #include "hal/error.hpp"
+#include "hal_vulkan/interop.hpp"
 #include "hal_vulkan/vulkan.hpp"
 #include "instance.hpp"
 #include "memory.hpp"
@@ -36,6 +37,7 @@ struct ImageObject {
   VkImage image = VK_NULL_HANDLE;
   VkImageView view = VK_NULL_HANDLE;
   Allocation memory;
+  bool owned = true;  // false: imported (hal_vulkan/interop.hpp); only the view is ours
 };
 
 struct PipelineObject {
@@ -132,6 +134,8 @@ class VulkanCommandList;
 class VulkanDevice final : public hal::Device {
  public:
   explicit VulkanDevice(const DeviceOptions& options);
+  // On the caller's objects (hal_vulkan/interop.hpp): nothing of theirs is destroyed.
+  explicit VulkanDevice(const ExternalDevice& external);
   ~VulkanDevice() override;
 
   const AdapterInfo& adapter() const override { return adapter_.info; }
@@ -194,12 +198,19 @@ class VulkanDevice final : public hal::Device {
   // Gives a Vulkan object a debug name (shown in validation messages and captures).
   void set_name(VkObjectType type, std::uint64_t handle, const std::string& name) const;
 
+  // The caller's image as a HAL image (interop.hpp).
+  ImageHandle import_image(VkImage image, VkFormat format, std::uint32_t width, std::uint32_t height, ImageUsage usage,
+                           std::string_view name);
+
   // One-shot command buffer for host transfers: records with `record`, submits, waits.
   template <typename F>
   void run_now(std::string_view what, F&& record);
 
  private:
   void create_logical_device(const DeviceOptions& options);
+  // After the device exists: extension entry points, allocator, transfer pool, upload ring.
+  void load_functions();
+  void create_shared_objects();
   VkCommandBuffer begin_transfer();
   void finish_transfer(VkCommandBuffer cmd, std::string_view what);
   // A host-visible staging buffer of `size` bytes (usage transfer src and dst).
@@ -221,6 +232,7 @@ class VulkanDevice final : public hal::Device {
   VkCommandPool transfer_pool_ = VK_NULL_HANDLE;
   std::uint64_t submitted_ = 0, completed_ = 0;
   bool lost_ = false;
+  bool owns_device_ = true;  // false on the caller's VkDevice (interop)
 };
 
 template <typename F>

@@ -98,6 +98,7 @@ Instance::Instance(const InstanceOptions& options) : on_message_(options.on_mess
 }
 
 Instance::~Instance() {
+  if (!owned_) return;
   if (messenger_) {
     auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));

@@ -24,6 +24,8 @@ struct InstanceOptions {
 class Instance {
  public:
   explicit Instance(const InstanceOptions& options);
+  // Someone else's instance (interop): used, never destroyed.
+  Instance(VkInstance borrowed, bool debug_utils) : instance_(borrowed), debug_utils_(debug_utils), owned_(false) {}
   ~Instance();
   Instance(const Instance&) = delete;
   Instance& operator=(const Instance&) = delete;
@@ -36,6 +38,7 @@ class Instance {
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   bool debug_utils_ = false;
+  bool owned_ = true;
   std::function<void(const std::string&)> on_message_;
   static VKAPI_ATTR VkBool32 VKAPI_CALL on_debug(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                  VkDebugUtilsMessageTypeFlagsEXT types,
