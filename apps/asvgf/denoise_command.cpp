@@ -26,6 +26,7 @@ struct DenoiseOptions {
   std::string color, albedo, normal, depth, motion, gradient, reference;
   bool depth_gradient = false;
   bool motion_check = true;
+  bool validate = false;
   int first = 0;
   int frames = 0;  // 0: as many as --color has from --first-frame on
   std::string out = "denoised";
@@ -112,6 +113,7 @@ int run_denoise(DenoiseOptions& o) {
                                        : DenoiseMethod::Asvgf;
   config.settings = o.device.denoise;
   config.depth_gradient_given = o.depth_gradient;
+  config.validate = o.validate;
   asvgf::Denoiser denoiser(*device, config);
 
   const auto usage =
@@ -193,6 +195,9 @@ int run_denoise(DenoiseOptions& o) {
     render::write_exr(dir / frame_file("frame", f, "exr"), w, h, hdr);
     render::write_png(dir / frame_file("frame", f, "png"), w, h, ldr);
 
+    if (o.validate)
+      for (const auto& problem : denoiser.input_report().problems)
+        std::fprintf(stderr, "%sframe %d: %s\n", o.quiet ? "" : "\n", f, problem.c_str());
     double gpu_ms = 0;
     bool timed = true;
     for (const auto& t : denoiser.timings()) {
@@ -250,6 +255,9 @@ std::function<int()> add_denoise_command(CLI::App& app) {
   cmd->add_flag("!--no-motion-check", o->motion_check,
                 "Do not test whether the motion vectors follow the convention (checked from frame to frame: the "
                 "previous frame's depth where they point should match)");
+  cmd->add_flag("--validate", o->validate,
+                "Also check every frame's inputs on the GPU against the conventions and print what is wrong "
+                "(asvgf::DenoiserConfig::validate)");
   cmd->add_option("--reference", o->reference, "Reference frames (RGB radiance): also write metrics.csv");
   cmd->add_option("--method", o->method, "ema, svgf or asvgf")
       ->check(CLI::IsMember({"ema", "svgf", "asvgf"}))

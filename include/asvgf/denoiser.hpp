@@ -81,6 +81,24 @@ struct DenoiserConfig {
   DenoiseMethod method = DenoiseMethod::Asvgf;
   DenoiseSettings settings;           // `adaptive` is set from the method
   bool depth_gradient_given = false;  // depth.y holds the depth gradient
+  // Check every frame's inputs on the GPU against the conventions above (one extra pass that
+  // counts with atomics); input_report() says what is wrong, in words.
+  bool validate = false;
+};
+
+// What DenoiserConfig::validate found in the last frame's inputs (counts of pixels).
+struct InputReport {
+  std::uint32_t pixels = 0, surface_pixels = 0;  // surface: depth finite and > 0
+  std::uint32_t illumination_not_finite = 0, illumination_negative = 0, illumination_above_fp16 = 0;
+  std::uint32_t albedo_invalid = 0;                          // NaN, Inf or negative
+  std::uint32_t normal_not_unit = 0, normal_not_finite = 0;  // on surface pixels; unit: length within 0.1 of 1
+  std::uint32_t depth_not_finite = 0, depth_negative = 0;
+  std::uint32_t motion_not_finite = 0;
+  // Surface pixels moving by 0.5 px or more (previous frame available), and how many of them land
+  // on the same surface in the previous frame (depth within 5%) following the vectors as given and
+  // negated.
+  std::uint32_t moving_pixels = 0, moving_consistent = 0, moving_consistent_negated = 0;
+  std::vector<std::string> problems;  // in words, e.g. "normals are not unit length at 12% of surface pixels"
 };
 
 class Denoiser {
@@ -113,6 +131,9 @@ class Denoiser {
   // Samples dropped (NaN, Inf) or clamped before the histories and output pixels written as 0,
   // since creation; waits for the device.
   Sanitised sanitised();
+  // With DenoiserConfig::validate: what the last frame's inputs got wrong; waits for the device.
+  // Throws hal::Error (InvalidUsage) without it.
+  InputReport input_report();
   const DenoiserConfig& config() const;
 
  private:

@@ -3,13 +3,17 @@
 #include "asvgf/denoiser.hpp"
 
 #include <algorithm>
+#include <array>
+#include <span>
 #include <string>
 
+#include "api/input_report.hpp"
 #include "graph/graph_runtime.hpp"
 #include "hal/error.hpp"
 #include "passes/denoiser.hpp"
 #include "passes/pack_surface.hpp"
 #include "passes/temporal.hpp"
+#include "passes/validate_inputs.hpp"
 
 namespace asvgf {
 namespace {
@@ -72,13 +76,23 @@ void check_config(const hal::Device& device, const DenoiserConfig& c) {
 }  // namespace
 
 struct Denoiser::Impl {
-  Impl(hal::Device& d, const DenoiserConfig& c) : device(d), config(c), runtime(d), pipelines(d), counters(d) {}
+  Impl(hal::Device& d, const DenoiserConfig& c) : device(d), config(c), runtime(d), pipelines(d), counters(d) {
+    if (c.validate)
+      input_counts =
+          d.create_buffer({"denoiser input counts", passes::kInputCounts * 4,
+                           hal::BufferUsage::Storage | hal::BufferUsage::CopySrc | hal::BufferUsage::CopyDst});
+  }
+  ~Impl() {
+    if (input_counts) device.destroy(input_counts);
+  }
   hal::Device& device;
   DenoiserConfig config;
   graph::GraphRuntime runtime;
   passes::PipelineCache pipelines;
   passes::SanitizeCounters counters;
   std::unique_ptr<hal::CommandList> own_commands;
+  hal::BufferHandle input_counts;  // DenoiserConfig::validate
+  hal::State input_counts_state = hal::State::Undefined;
 };
 
 Denoiser::Denoiser(hal::Device& device, const DenoiserConfig& config) {
@@ -97,6 +111,16 @@ Denoiser::~Denoiser() {
 
 const DenoiserConfig& Denoiser::config() const {
   return impl_->config;
+}
+
+InputReport Denoiser::input_report() {
+  if (!impl_->config.validate)
+    throw hal::Error(hal::ErrorKind::InvalidUsage, "denoiser input report", "DenoiserConfig::validate is off");
+  std::array<std::uint32_t, passes::kInputCounts> counts{};
+  if (impl_->input_counts_state != hal::State::CopySrc) return api::make_input_report(counts);  // no frame yet
+  impl_->device.wait();
+  impl_->device.read_buffer(impl_->input_counts, 0, std::as_writable_bytes(std::span(counts)));
+  return api::make_input_report(counts);
 }
 
 void Denoiser::reset() {
@@ -132,6 +156,15 @@ void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, cons
   const ResourceId counters = impl_->counters.import(g);
   const ResourceId depth_normal = g.add_image("depth_normal", w, h, F::RGBA32F, graph::Lifetime::Persistent);
   passes::add_pack_surface(g, impl_->pipelines, {depth, normal, depth_normal}, impl_->config.depth_gradient_given);
+
+  if (impl_->config.validate) {
+    const ResourceId counts =
+        g.import_buffer("input_counts", impl_->input_counts, impl_->input_counts_state, passes::kInputCounts * 4);
+    passes::add_validate_inputs(g, impl_->pipelines,
+                                {illumination, albedo, normal, depth, motion, depth_normal, counts});
+    g.output(counts, hal::State::CopySrc);
+    impl_->input_counts_state = hal::State::CopySrc;
+  }
 
   const bool adaptive = impl_->config.method == DenoiseMethod::Asvgf;
   std::optional<ResourceId> gradient_samples;

@@ -7,3 +7,4 @@ asvgf_add_shader(atrous SOURCE denoise/atrous.comp VARIANTS plain history=HISTOR
 asvgf_add_shader(composite SOURCE denoise/composite.comp)
 asvgf_add_shader(pack_surface SOURCE denoise/pack_surface.comp)
 asvgf_add_shader(gradient_reprojected SOURCE denoise/gradient_reprojected.comp)
+asvgf_add_shader(validate_inputs SOURCE denoise/validate_inputs.comp)

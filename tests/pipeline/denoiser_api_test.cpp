@@ -1,0 +1,152 @@
+// The public API (include/asvgf/denoiser.hpp) on the validated Vulkan device: the validate option
+// finds nothing in inputs that follow the conventions and names each kind of mistake in words, and
+// bad images and settings are refused naming the input or setting.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "asvgf/denoiser.hpp"
+#include "hal/error.hpp"
+#include "vulkan/validated_device.hpp"
+
+namespace {
+
+constexpr std::uint32_t kW = 48, kH = 16;
+
+// A scene sliding right by 3 pixels a frame: a staircase of depths (1, 2, ..., changing every 4
+// columns), normals facing the camera, radiance 1.
+struct Inputs {
+  std::vector<float> illumination, albedo, normal, depth, motion;
+};
+Inputs sliding_frame(int frame) {
+  Inputs in;
+  const std::size_t n = std::size_t(kW) * kH * 4;
+  in.illumination.assign(n, 1.0f);
+  in.albedo.assign(n, 1.0f);
+  in.normal.assign(n, 0.0f);
+  in.depth.assign(n, 0.0f);
+  in.motion.assign(n, 0.0f);
+  for (std::uint32_t y = 0; y < kH; ++y)
+    for (std::uint32_t x = 0; x < kW; ++x) {
+      const std::size_t i = (std::size_t(y) * kW + x) * 4;
+      const int source = static_cast<int>(x) - 3 * frame;  // what is at x came from x - 3 last frame
+      in.depth[i] = 1.0f + static_cast<float>(((source % 40) + 40) % 40 / 4);
+      in.normal[i + 2] = -1.0f;
+      in.motion[i] = -3.0f;  // previous minus current
+    }
+  return in;
+}
+
+struct Rig {
+  ValidatedDevice device;
+  std::vector<hal::ImageHandle> images;  // illumination, albedo, normal, depth, motion, radiance
+  asvgf::Denoiser denoiser;
+  int frame = 0;
+
+  explicit Rig(asvgf::DenoiserConfig config) : denoiser(*device, config) {
+    const auto usage =
+        hal::ImageUsage::Sampled | hal::ImageUsage::Storage | hal::ImageUsage::CopySrc | hal::ImageUsage::CopyDst;
+    for (const char* name : {"illumination", "albedo", "normal", "depth", "motion", "radiance"})
+      images.push_back(device->create_image({name, kW, kH, hal::Format::RGBA32F, usage}));
+  }
+  ~Rig() {
+    for (auto h : images) device->destroy(h);
+  }
+  void run(const Inputs& in) {
+    const std::vector<float>* data[] = {&in.illumination, &in.albedo, &in.normal, &in.depth, &in.motion};
+    for (int i = 0; i < 5; ++i) device->upload_image(images[i], std::as_bytes(std::span(*data[i])));
+    const auto F = hal::Format::RGBA32F;
+    const auto up = hal::State::CopyDst;
+    denoiser.denoise(
+        {{images[0], F, up}, {images[1], F, up}, {images[2], F, up}, {images[3], F, up}, {images[4], F, up}},
+        {{images[5], F, frame == 0 ? hal::State::Undefined : hal::State::ShaderRead}});
+    ++frame;
+  }
+};
+
+bool mentions(const asvgf::InputReport& r, const std::string& text) {
+  return std::any_of(r.problems.begin(), r.problems.end(),
+                     [&](const std::string& p) { return p.find(text) != std::string::npos; });
+}
+
+}  // namespace
+
+TEST_CASE("denoiser API: validate finds nothing wrong with inputs that follow the conventions") {
+  Rig rig({.width = kW, .height = kH, .method = asvgf::DenoiseMethod::Svgf, .validate = true});
+  for (int f = 0; f < 3; ++f) rig.run(sliding_frame(f));
+  const asvgf::InputReport r = rig.denoiser.input_report();
+  for (const auto& p : r.problems) MESSAGE(p);
+  CHECK(r.problems.empty());
+  CHECK(r.pixels == kW * kH);
+  CHECK(r.surface_pixels == kW * kH);
+  CHECK(r.moving_pixels == kW * kH);
+  CHECK(r.moving_consistent > 0.8 * r.moving_pixels);
+  CHECK(rig.device.messages.empty());
+}
+
+TEST_CASE("denoiser API: validate names negated motion, encoded normals, NaN radiance and negative depth") {
+  Rig rig({.width = kW, .height = kH, .method = asvgf::DenoiseMethod::Svgf, .validate = true});
+  rig.run(sliding_frame(0));
+  Inputs bad = sliding_frame(1);
+  for (std::size_t i = 0; i < bad.motion.size(); i += 4) bad.motion[i] = -bad.motion[i];  // current minus previous
+  for (std::size_t i = 0; i < bad.normal.size(); i += 4) bad.normal[i + 2] = 0.5f;        // (n + 1) / 2 encoding
+  bad.illumination[0] = std::numeric_limits<float>::quiet_NaN();
+  bad.depth[4 * 5] = -1.0f;
+  rig.run(bad);
+  const asvgf::InputReport r = rig.denoiser.input_report();
+  for (const auto& p : r.problems) MESSAGE(p);
+  CHECK(mentions(r, "motion vectors look negated"));
+  CHECK(mentions(r, "normals are not unit length at 100.0% of surface pixels"));
+  CHECK(mentions(r, "illumination is NaN or Inf at 1 pixel"));
+  CHECK(mentions(r, "depth is negative at 1 pixel"));
+  CHECK(r.moving_consistent_negated > r.moving_consistent);
+  CHECK(rig.device.messages.empty());
+}
+
+TEST_CASE("denoiser API: images and settings it cannot use are refused naming them") {
+  ValidatedDevice device;
+  auto settings_error = [&](asvgf::DenoiserConfig config) {
+    try {
+      asvgf::Denoiser d(*device, config);
+    } catch (const hal::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK(settings_error({.width = 0, .height = 4}).find("denoiser size") != std::string::npos);
+  asvgf::DenoiserConfig alpha{.width = 4, .height = 4};
+  alpha.settings.alpha = 0.0f;
+  CHECK(settings_error(alpha).find("alpha") != std::string::npos);
+  asvgf::DenoiserConfig tap{.width = 4, .height = 4};
+  tap.settings.history_tap = 7;
+  CHECK(settings_error(tap).find("history_tap") != std::string::npos);
+
+  asvgf::Denoiser denoiser(*device, {.width = 4, .height = 4, .method = asvgf::DenoiseMethod::Ema});
+  const hal::ImageHandle f32 = device->create_image({"f32", 4, 4, hal::Format::RGBA32F});
+  const hal::ImageHandle u8 = device->create_image({"u8", 4, 4, hal::Format::RGBA8Unorm});
+  const auto F = hal::Format::RGBA32F;
+  auto record_error = [&](asvgf::DenoiserInputs in, asvgf::DenoiserOutputs out) {
+    auto commands = device->create_command_list("refused");
+    try {
+      denoiser.record(*commands, in, out);
+    } catch (const hal::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const asvgf::DenoiserImage good{f32, F, hal::State::Undefined};
+  CHECK(record_error({good, {u8, hal::Format::RGBA8Unorm}, good, good, good}, {good}).find("denoiser input albedo") !=
+        std::string::npos);
+  CHECK(record_error({good, good, good, good, {}}, {good}).find("denoiser input motion") != std::string::npos);
+  CHECK(record_error({good, good, good, good, good}, {{f32, hal::Format::RGBA16F}}).find("denoiser output radiance") !=
+        std::string::npos);
+  CHECK_THROWS_AS(denoiser.input_report(), hal::Error);  // validate is off
+  device->destroy(f32);
+  device->destroy(u8);
+  CHECK(device.messages.empty());
+}
