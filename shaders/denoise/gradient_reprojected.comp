@@ -13,7 +13,12 @@
 #include "common/compute.glsl"
 #include "common/denoise.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+// One invocation per pixel, a 12x12 workgroup covering 4x4 strata: each invocation reprojects its
+// pixel, then one invocation per stratum sums the 9 results from shared memory in pixel order (a
+// loop over the 9 pixels in one invocation per stratum ran at 3x the pass's bandwidth floor on the
+// H200: too little parallelism).
+layout(local_size_x = 12, local_size_y = 12) in;
+shared vec2 pixel_sums[144];  // (l_cur, l_prev) of a consistent pixel, (-1, 0) otherwise
 
 layout(set = 0, binding = 0) uniform Params {
   uint width;  // full resolution
@@ -30,27 +35,37 @@ layout(set = 0, binding = 5) uniform texture2D prev_noisy_luminance;
 layout(set = 0, binding = 6, r32f) writeonly uniform image2D noisy_luminance;
 layout(set = 0, binding = 7, rgba16f) writeonly uniform image2D gradient;
 
+// (l_cur, l_prev) of pixel p when its reprojection is consistent, else (-1, 0); writes its luminance.
+vec2 reproject(ivec2 p) {
+  vec3 c = texelFetch(illumination, p, 0).rgb;
+  bool finite = !any_not_finite(c);
+  float l = finite ? luminance(clamp_sample(c)) : 0.0;
+  imageStore(noisy_luminance, p, vec4(l, 0.0, 0.0, 0.0));
+  Surface cur = surface_from(texelFetch(depth_normal, p, 0));
+  if (params.history_valid == 0u || !finite || !hit(cur)) return vec2(-1.0, 0.0);
+  vec2 q = vec2(p) + 0.5 + texelFetch(motion, p, 0).xy;
+  if (!(q.x >= 0.0 && q.y >= 0.0 && q.x < float(params.width) && q.y < float(params.height))) return vec2(-1.0, 0.0);
+  ivec2 qi = ivec2(q);
+  if (!reprojection_consistent(cur, surface_from(texelFetch(prev_depth_normal, qi, 0)))) return vec2(-1.0, 0.0);
+  float lp = texelFetch(prev_noisy_luminance, qi, 0).x;
+  if (not_finite(lp)) return vec2(-1.0, 0.0);
+  return vec2(l, clamp(lp, 0.0, kFp16Max));
+}
+
 void main() {
-  ivec2 s = invocation_pixel();
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 local = ivec2(gl_LocalInvocationID.xy);
+  pixel_sums[local.y * 12 + local.x] = inside(p, params.width, params.height) ? reproject(p) : vec2(-1.0, 0.0);
+  barrier();
+  if (local.x >= 4 || local.y >= 4) return;
+  ivec2 s = ivec2(gl_WorkGroupID.xy) * 4 + local;
   if (!inside(s, params.gradient_width, params.gradient_height)) return;
   float sum_cur = 0.0, sum_prev = 0.0;
   for (int i = 0; i < 9; ++i) {
-    ivec2 p = 3 * s + ivec2(i % 3, i / 3);
-    if (!inside(p, params.width, params.height)) continue;
-    vec3 c = texelFetch(illumination, p, 0).rgb;
-    bool finite = !any_not_finite(c);
-    float l = finite ? luminance(clamp_sample(c)) : 0.0;
-    imageStore(noisy_luminance, p, vec4(l, 0.0, 0.0, 0.0));
-    Surface cur = surface_from(texelFetch(depth_normal, p, 0));
-    if (params.history_valid == 0u || !finite || !hit(cur)) continue;
-    vec2 q = vec2(p) + 0.5 + texelFetch(motion, p, 0).xy;
-    if (!(q.x >= 0.0 && q.y >= 0.0 && q.x < float(params.width) && q.y < float(params.height))) continue;
-    ivec2 qi = ivec2(q);
-    if (!reprojection_consistent(cur, surface_from(texelFetch(prev_depth_normal, qi, 0)))) continue;
-    float lp = texelFetch(prev_noisy_luminance, qi, 0).x;
-    if (not_finite(lp)) continue;
-    sum_cur += l;
-    sum_prev += clamp(lp, 0.0, kFp16Max);
+    vec2 v = pixel_sums[(3 * local.y + i / 3) * 12 + 3 * local.x + i % 3];
+    if (v.x < 0.0) continue;
+    sum_cur += v.x;
+    sum_prev += v.y;
   }
   vec2 result = vec2(sum_cur - sum_prev, max(sum_cur, sum_prev));
   imageStore(gradient, s, vec4(clamp(result, vec2(-kFp16Max), vec2(kFp16Max)), 0.0, 0.0));
