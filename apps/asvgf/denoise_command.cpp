@@ -49,6 +49,8 @@ void apply_input_folder(DenoiseOptions& o) {
   auto fill = [&](std::string& pattern, const char* buffer) {
     if (pattern.empty()) pattern = (dir / (std::string(buffer) + "_%04d.exr")).string();
   };
+  // Depth files from render --aovs hold the depth gradient in G; a --depth given beside --input may not.
+  if (o.depth.empty()) o.depth_gradient = true;
   fill(o.color, "color");
   fill(o.albedo, "albedo");
   fill(o.normal, "normal");
@@ -57,7 +59,6 @@ void apply_input_folder(DenoiseOptions& o) {
   if (o.method == "asvgf" && o.device.gradient_source == "reshaded" && o.gradient.empty() &&
       std::filesystem::exists(dir / frame_file("gradient", o.first, "exr")))
     fill(o.gradient, "gradient");
-  o.depth_gradient = true;
 }
 
 // True when some stratum holds a gradient sample (index 0..8); false: nothing moved this frame.
@@ -127,15 +128,19 @@ int run_denoise(DenoiseOptions& o) {
     BufferSpec spec;
     hal::ImageHandle image;
   };
+  // Specs first, images one by one: with the creations inside the braced list, a creation that
+  // threw crashed the unwinding (GCC 12 freed a string of the list twice; found by the fault sweep).
   std::vector<Input> inputs = {
-      {&color, {"color", w, h, {"R", "G", "B"}}, create("color", w, h, F32)},
-      {&albedo, {"albedo", w, h, {"R", "G", "B"}}, create("albedo", w, h, F32)},
-      {&normal, {"normal", w, h, {"R", "G", "B"}}, create("normal", w, h, F32)},
+      {&color, {"color", w, h, {"R", "G", "B"}}, {}},
+      {&albedo, {"albedo", w, h, {"R", "G", "B"}}, {}},
+      {&normal, {"normal", w, h, {"R", "G", "B"}}, {}},
       {&depth,
-       {"depth", w, h, o.depth_gradient ? std::vector<std::string>{"R", "G"} : std::vector<std::string>{"R"}},
-       create("depth", w, h, F32)},
-      {&motion, {"motion", w, h, {"R", "G"}}, create("motion", w, h, F32)},
+       {"depth", w, h, o.depth_gradient ? std::vector<std::string>{"R", "G"} : std::vector<std::string>{"R"},
+        /*infinity_allowed=*/true},
+       {}},
+      {&motion, {"motion", w, h, {"R", "G"}}, {}},
   };
+  for (auto& in : inputs) in.image = create(in.spec.name.c_str(), w, h, F32);
   const hal::ImageHandle gradient_image = gradient.empty() ? hal::ImageHandle{} : create("gradient", gw, gh, F32);
   const hal::ImageHandle radiance = create("radiance", w, h, F32);
   const hal::ImageHandle display = create("display", w, h, hal::Format::RGBA8Unorm);

@@ -19,7 +19,7 @@ FramePattern::FramePattern(std::string option, std::string pattern)
     }
     std::size_t j = i + 1;
     while (j < pattern_.size() && std::isdigit(static_cast<unsigned char>(pattern_[j]))) ++j;
-    if (j >= pattern_.size() || pattern_[j] != 'd' || j - i > 3)
+    if (j >= pattern_.size() || pattern_[j] != 'd' || j - i > 4)
       throw CLI::ValidationError(option_, "'" + pattern_ + "': only %d, %Nd or %0Nd (N < 100) and %% may appear");
     ++conversions;
     i = j;
@@ -29,7 +29,8 @@ FramePattern::FramePattern(std::string option, std::string pattern)
 }
 
 std::filesystem::path FramePattern::path(int frame) const {
-  std::vector<char> buffer(pattern_.size() + 32);
+  const int length = std::snprintf(nullptr, 0, pattern_.c_str(), frame);
+  std::vector<char> buffer(static_cast<std::size_t>(std::max(length, 0)) + 1);
   std::snprintf(buffer.data(), buffer.size(), pattern_.c_str(), frame);
   return std::filesystem::path(buffer.data());
 }
@@ -54,7 +55,7 @@ render::ExrImage read_frame(const FramePattern& pattern, int frame, const Buffer
                                  std::to_string(spec.channels.size()) + " channels)");
   const std::size_t used = spec.channels.size();
   for (std::size_t i = 0; i < image.rgba.size(); ++i)
-    if (i % 4 < used && !std::isfinite(image.rgba[i])) {
+    if (i % 4 < used && !std::isfinite(image.rgba[i]) && !(spec.infinity_allowed && std::isinf(image.rgba[i]))) {
       const std::size_t p = i / 4;
       throw render::ImageIoError(what + ": " + (std::isnan(image.rgba[i]) ? "NaN" : "Inf") + " in channel " +
                                  spec.channels[i % 4] + " at pixel (" + std::to_string(p % image.width) + ", " +

@@ -31,9 +31,11 @@ struct BufferSpec {
   std::string name;                     // "color", "depth", ...
   std::uint32_t width = 0, height = 0;  // 0: any (the first color frame sets the size)
   std::vector<std::string> channels;    // e.g. {"R", "G"}
+  bool infinity_allowed = false;        // +-Inf is a legal value (depth: background)
 };
 // Reads frame `frame` of `pattern` and checks it against `spec`. Throws render::ImageIoError naming
-// the file: missing, unreadable, another size, a missing channel, a NaN or Inf (with its pixel).
+// the file: missing, unreadable, another size, a missing channel, a NaN or (unless allowed) an Inf,
+// with its pixel.
 render::ExrImage read_frame(const FramePattern& pattern, int frame, const BufferSpec& spec);
 
 // Frames first, first+1, ... while `pattern` has a file; 0 when the first is missing.

@@ -58,7 +58,15 @@ VulkanDevice::VulkanDevice(const ExternalDevice& external) : owns_device_(false)
   caps.ray_query = external.acceleration_structures && external.ray_query;
   caps.fp16_storage = false;
   load_functions();
-  create_shared_objects();
+  try {
+    create_shared_objects();
+  } catch (...) {
+    // No destructor runs for a failed constructor: release what was made on the caller's device.
+    if (ring_.buffer) vkDestroyBuffer(device_, ring_.buffer, nullptr);
+    if (allocator_) allocator_->free(ring_.memory);
+    if (transfer_pool_) vkDestroyCommandPool(device_, transfer_pool_, nullptr);
+    throw;
+  }
 }
 
 ImageHandle VulkanDevice::import_image(VkImage image, VkFormat format, std::uint32_t width, std::uint32_t height,

@@ -138,6 +138,17 @@ void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, cons
   if (in.gradient_samples) check_input("gradient_samples", *in.gradient_samples, 2);
   check_output("radiance", out.radiance, F::RGBA32F);
   if (out.display) check_output("display", *out.display, F::RGBA8Unorm);
+  // The graph tracks each import's state on its own: one image given twice would be transitioned
+  // from a state it is no longer in.
+  for (const auto& [name, image] : {std::pair{"illumination", in.illumination},
+                                    {"albedo", in.albedo},
+                                    {"normal", in.normal},
+                                    {"depth", in.depth},
+                                    {"motion", in.motion}}) {
+    if (image.image == out.radiance.image || (out.display && image.image == out.display->image))
+      throw hal::Error(hal::ErrorKind::InvalidUsage, std::string("denoiser input ") + name,
+                       "is also an output: denoising in place is not supported");
+  }
   if (in.camera_cut) reset();
 
   graph::RenderGraph g;

@@ -12,7 +12,11 @@ void GraphRuntime::execute(const CompiledFrame& frame, hal::CommandList& command
   ensure_resources(frame);
   const auto regions = static_cast<std::uint32_t>(std::max<std::size_t>(1, frame.passes.size()));
   if (regions > timer_regions_) {
-    if (timers_) device_.destroy(timers_);
+    // A frame still in flight may use the old pool (record-and-submit callers need not wait).
+    if (timers_) {
+      device_.wait();
+      device_.destroy(timers_);
+    }
     timers_ = device_.create_timer_queries({"graph.timers", regions});
     timer_regions_ = regions;
   }

@@ -59,7 +59,9 @@ void GraphRuntime::ensure_resources(const CompiledFrame& frame) {
       auto it = persistent_.find(d.name);
       if (it != persistent_.end() &&
           !same_shape(Slot{d.kind, d.width, d.height, d.format, d.size, {}}, it->second.decl)) {
-        // A resize: the old versions are useless (compile() already treated them as new).
+        // A resize: the old versions are useless (compile() already treated them as new). A frame
+        // still in flight may read them.
+        device_.wait();
         destroy(device_, it->second.versions[0]);
         destroy(device_, it->second.versions[1]);
         persistent_.erase(it);

@@ -26,7 +26,7 @@ graph::PassBuilder add_gradient(graph::RenderGraph& graph, PipelineCache& pipeli
       {u.gradient_width, u.gradient_height, 1});
 }
 
-// One 12x12 workgroup per 4x4 strata (the shader's layout).
+// One 12x9 workgroup per 4x3 strata (the shader's layout).
 graph::PassBuilder add_gradient_reprojected(graph::RenderGraph& graph, PipelineCache& pipelines,
                                             const ReprojectedGradientResources& r) {
   using Params = asvgf::shaders::gradient_reprojected_uniforms::Params;
@@ -42,7 +42,7 @@ graph::PassBuilder add_gradient_reprojected(graph::RenderGraph& graph, PipelineC
                            {"prev_noisy_luminance", r.luminance, true},
                            {"noisy_luminance", r.luminance},
                            {"gradient", r.gradient}},
-                          to_bytes(u), {groups_for(u.gradient_width, 4) * 12, groups_for(u.gradient_height, 4) * 12, 1},
+                          to_bytes(u), {groups_for(u.gradient_width, 4) * 12, groups_for(u.gradient_height, 3) * 9, 1},
                           [r](graph::PassContext& ctx, std::vector<std::byte>& uniforms) {
                             const std::uint32_t valid =
                                 ctx.history_valid(r.depth_normal) && ctx.history_valid(r.luminance);

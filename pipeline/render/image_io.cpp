@@ -108,7 +108,11 @@ ExrImage read_exr(const std::filesystem::path& path) {
     throw ImageIoError(name + ": cannot read EXR: channel " + unsupported + " holds unsigned integers, not floats");
   }
   // One channel of any name is a grey image (as tinyexr's LoadEXR reads it).
-  if (header.num_channels == 1) index[0] = index[1] = index[2] = 0;
+  if (header.num_channels == 1) {
+    index[0] = index[1] = index[2] = 0;
+    for (const char* c : {"R", "G", "B"})
+      if (out.channels.front() != c) out.channels.emplace_back(c);
+  }
   if (index[0] < 0 && index[1] < 0 && index[2] < 0 && index[3] < 0) {
     FreeEXRHeader(&header);
     throw ImageIoError(name + ": cannot read EXR: no R, G, B or A channel (and more than one channel)");

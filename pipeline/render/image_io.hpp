@@ -28,7 +28,7 @@ void write_exr(const std::filesystem::path& path, std::uint32_t width, std::uint
 struct ExrImage {
   std::uint32_t width = 0, height = 0;
   std::vector<float> rgba;  // width*height*4, rows top to bottom (A = 1 where the file has none)
-  std::vector<std::string> channels;  // the names the file declares ("R", "G", "B", ...)
+  std::vector<std::string> channels;  // the names the file declares ("R", "G", "B", ...), plus R, G, B for a grey file
 };
 // Reads a single-part OpenEXR file (half or float channels, scanline or tiled): R, G, B and A by
 // name, each absent one 0 (A: 1); a file of one channel of any name is grey (into R, G and B).

@@ -13,12 +13,13 @@
 #include "common/compute.glsl"
 #include "common/denoise.glsl"
 
-// One invocation per pixel, a 12x12 workgroup covering 4x4 strata: each invocation reprojects its
+// One invocation per pixel, a 12x9 workgroup covering 4x3 strata (108 invocations: Vulkan and GLES
+// guarantee 128): each invocation reprojects its
 // pixel, then one invocation per stratum sums the 9 results from shared memory in pixel order (a
 // loop over the 9 pixels in one invocation per stratum ran at 3x the pass's bandwidth floor on the
 // H200: too little parallelism).
-layout(local_size_x = 12, local_size_y = 12) in;
-shared vec2 pixel_sums[144];  // (l_cur, l_prev) of a consistent pixel, (-1, 0) otherwise
+layout(local_size_x = 12, local_size_y = 9) in;
+shared vec2 pixel_sums[108];  // (l_cur, l_prev) of a consistent pixel, (-1, 0) otherwise
 
 layout(set = 0, binding = 0) uniform Params {
   uint width;  // full resolution
@@ -57,8 +58,8 @@ void main() {
   ivec2 local = ivec2(gl_LocalInvocationID.xy);
   pixel_sums[local.y * 12 + local.x] = inside(p, params.width, params.height) ? reproject(p) : vec2(-1.0, 0.0);
   barrier();
-  if (local.x >= 4 || local.y >= 4) return;
-  ivec2 s = ivec2(gl_WorkGroupID.xy) * 4 + local;
+  if (local.x >= 4 || local.y >= 3) return;
+  ivec2 s = ivec2(gl_WorkGroupID.xy) * ivec2(4, 3) + local;
   if (!inside(s, params.gradient_width, params.gradient_height)) return;
   float sum_cur = 0.0, sum_prev = 0.0;
   for (int i = 0; i < 9; ++i) {

@@ -73,6 +73,7 @@ TEST_CASE("denoise inputs: a pattern needs exactly one frame number and expands 
   CHECK_THROWS_AS(cli::FramePattern("--color", "%d_%d.exr"), CLI::ValidationError);
   CHECK_THROWS_AS(cli::FramePattern("--color", "%s.exr"), CLI::ValidationError);
   CHECK_THROWS_AS(cli::FramePattern("--color", "%0100d.exr"), CLI::ValidationError);
+  CHECK(cli::FramePattern("--color", "%040d").path(3).string() == std::string(39, '0') + "3");
 }
 
 TEST_CASE("denoise inputs: a frame's EXR is refused naming the file for a missing channel, a size or a NaN") {
@@ -90,12 +91,23 @@ TEST_CASE("denoise inputs: a frame's EXR is refused naming the file for a missin
   const cli::FramePattern nan("--motion", (dir / "nan_%04d.exr").string());
   CHECK(error_of(one, 0, {"depth", w, h, {"R"}}).empty());
   CHECK(error_of(rg, 0, {"motion", w, h, {"R", "G"}}).empty());
-  CHECK(error_of(one, 0, {"motion", w, h, {"R", "G"}}).find("one_0000.exr (motion, frame 0): no channel G") !=
+  write_channels(dir / "rb_0000.exr", w, h, {"B", "R"}, {plane, plane});
+  const cli::FramePattern rb("--motion", (dir / "rb_%04d.exr").string());
+  CHECK(error_of(rb, 0, {"motion", w, h, {"R", "G"}}).find("rb_0000.exr (motion, frame 0): no channel G") !=
         std::string::npos);
   CHECK(error_of(rg, 0, {"motion", 6, 3, {"R", "G"}}).find("5x3, expected 6x3") != std::string::npos);
   CHECK(error_of(nan, 0, {"motion", w, h, {"R", "G"}}).find("NaN in channel G at pixel (3, 2)") != std::string::npos);
   CHECK(error_of(rg, 1, {"motion", w, h, {"R", "G"}}).find("rg_0001.exr (motion, frame 1): missing") !=
         std::string::npos);
+  // A grey file (one channel of any name) reads as R = G = B; depth may hold +-Inf (background).
+  write_channels(dir / "z_0000.exr", w, h, {"Z"}, {plane});
+  CHECK(error_of(cli::FramePattern("--depth", (dir / "z_%04d.exr").string()), 0, {"depth", w, h, {"R"}}).empty());
+  std::vector<float> with_inf = plane;
+  with_inf[1] = std::numeric_limits<float>::infinity();
+  write_channels(dir / "inf_0000.exr", w, h, {"R"}, {with_inf});
+  const cli::FramePattern inf("--depth", (dir / "inf_%04d.exr").string());
+  CHECK(error_of(inf, 0, {"depth", w, h, {"R"}, true}).empty());
+  CHECK(error_of(inf, 0, {"color", w, h, {"R"}}).find("Inf in channel R at pixel (1, 0)") != std::string::npos);
   CHECK(cli::count_frames(rg, 0) == 1);
   CHECK(cli::count_frames(rg, 1) == 0);
 }

@@ -145,6 +145,7 @@ TEST_CASE("denoiser API: images and settings it cannot use are refused naming th
   CHECK(record_error({good, good, good, good, {}}, {good}).find("denoiser input motion") != std::string::npos);
   CHECK(record_error({good, good, good, good, good}, {{f32, hal::Format::RGBA16F}}).find("denoiser output radiance") !=
         std::string::npos);
+  CHECK(record_error({good, good, good, good, good}, {good}).find("is also an output") != std::string::npos);
   CHECK_THROWS_AS(denoiser.input_report(), hal::Error);  // validate is off
   device->destroy(f32);
   device->destroy(u8);

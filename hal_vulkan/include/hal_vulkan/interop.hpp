@@ -50,15 +50,21 @@ std::unique_ptr<hal::Device> wrap_device(const ExternalDevice& external);
 // Your image as a HAL image of `device` (made by wrap_device): 2D, one mip level and layer, of the
 // VkFormat matching a hal::Format (e.g. VK_FORMAT_R32G32B32A32_SFLOAT is RGBA32F), created with at
 // least the VkImageUsageFlags that `usage` names. destroy() releases only the HAL's view of it.
+// Import each image once and keep the handle: the denoiser caches descriptor sets per handle
+// (handles are never reused), so importing anew every frame grows that cache frame by frame.
 // Throws hal::Error: InvalidUsage (not a wrapped Vulkan device), Unsupported (a format the HAL has
 // no hal::Format for).
 hal::ImageHandle import_image(hal::Device& device, VkImage image, VkFormat format, std::uint32_t width,
                               std::uint32_t height, hal::ImageUsage usage, std::string_view name);
 
 // A HAL command list that records into your primary command buffer, which must be in the
-// recording state (begun) and from ExternalDevice::queue_family. You end and submit it; the HAL's
-// submit() refuses it. Uniform data it records lives in the device's upload ring until reset():
-// call reset() (or destroy the list) only once the GPU has finished that submission.
+// recording state (begun) and from ExternalDevice::queue_family. You end and submit it, on
+// ExternalDevice::queue: the HAL's wait() (which the denoiser's destructor, input_report() and
+// sanitised() use) waits on that queue only. The HAL's submit() refuses it. Uniform data it records
+// lives in the device's upload ring until reset(): call reset() (or destroy the list) only once
+// the GPU has finished that submission. Recording leaves the HAL's pipeline and descriptor sets
+// bound: bind your own again for compute work you record after it. GPU timings are not available
+// for work recorded this way (the HAL does not see the submission).
 std::unique_ptr<hal::CommandList> wrap_command_buffer(hal::Device& device, VkCommandBuffer command_buffer,
                                                       std::string_view name);
 
