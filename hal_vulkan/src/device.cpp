@@ -110,12 +110,7 @@ VulkanDevice::VulkanDevice(const DeviceOptions& options) {
   physical_ = physicals[index];
   adapter_ = reports[index];
 
-  VkPhysicalDeviceProperties props;
-  vkGetPhysicalDeviceProperties(physical_, &props);
-  limits_ = props.limits;
-  if (props.apiVersion < VK_API_VERSION_1_3)
-    throw Error(ErrorKind::Unsupported, adapter_.info.name,
-                "the adapter supports only " + adapter_.info.api_version + "; Vulkan 1.3 is required");
+  read_limits();
   if (options.require_ray_query && !adapter_.capabilities.ray_query)
     throw Error(ErrorKind::Unsupported, adapter_.info.name,
                 "ray queries were required but the adapter lacks VK_KHR_ray_query / VK_KHR_acceleration_structure");
@@ -123,6 +118,15 @@ VulkanDevice::VulkanDevice(const DeviceOptions& options) {
   create_logical_device(options);
   load_functions();
   create_shared_objects();
+}
+
+void VulkanDevice::read_limits() {
+  VkPhysicalDeviceProperties props;
+  vkGetPhysicalDeviceProperties(physical_, &props);
+  limits_ = props.limits;
+  if (props.apiVersion < VK_API_VERSION_1_3)
+    throw Error(ErrorKind::Unsupported, adapter_.info.name,
+                "the adapter supports only " + adapter_.info.api_version + "; Vulkan 1.3 is required");
 }
 
 void VulkanDevice::create_shared_objects() {

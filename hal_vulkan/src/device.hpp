@@ -208,6 +208,8 @@ class VulkanDevice final : public hal::Device {
 
  private:
   void create_logical_device(const DeviceOptions& options);
+  // The physical device's limits; throws Unsupported below Vulkan 1.3.
+  void read_limits();
   // After the device exists: extension entry points, allocator, transfer pool, upload ring.
   void load_functions();
   void create_shared_objects();

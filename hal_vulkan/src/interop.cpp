@@ -34,12 +34,7 @@ VulkanDevice::VulkanDevice(const ExternalDevice& external) : owns_device_(false)
   instance_ = std::make_unique<Instance>(external.instance, external.debug_utils);
   physical_ = external.physical;
   adapter_ = describe_adapter(physical_, 0);
-  VkPhysicalDeviceProperties props;
-  vkGetPhysicalDeviceProperties(physical_, &props);
-  limits_ = props.limits;
-  if (props.apiVersion < VK_API_VERSION_1_3)
-    throw Error(ErrorKind::Unsupported, adapter_.info.name,
-                "the adapter supports only " + adapter_.info.api_version + "; Vulkan 1.3 is required");
+  read_limits();
   std::uint32_t family_count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physical_, &family_count, nullptr);
   std::vector<VkQueueFamilyProperties> families(family_count);
