@@ -32,6 +32,11 @@ namespace {
 
 // Textures larger than this on a side are refused before decoding (a header can claim any size).
 constexpr int kMaxTextureSide = 16384;
+// A file may not decode to more pixels than this per byte of it: stb_image pads data that ends
+// early with zeros, so a 478-byte RLE TGA claiming 8224x8224 made it decode 67 M pixels (a fuzzer
+// timeout). The best real compression stays below it: DEFLATE's 1032:1 for 8-bit PNG, a few hundred
+// for flat JPEGs; only flat 1- and 2-bit PNGs go further.
+constexpr std::uint64_t kMaxPixelsPerByte = 2048;
 
 std::uint32_t big_endian32(const unsigned char* p) {
   return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) | std::uint32_t{p[3]};
@@ -129,6 +134,10 @@ Texture decode_image(const unsigned char* data, std::size_t size, const std::str
       (width > kMaxTextureSide || height > kMaxTextureSide))
     throw SceneError(prefix + "the image is " + std::to_string(width) + "x" + std::to_string(height) +
                      "; textures may be at most " + std::to_string(kMaxTextureSide) + " on a side");
+  if (std::uint64_t(std::max(width, 0)) * std::uint64_t(std::max(height, 0)) > kMaxPixelsPerByte * size)
+    throw SceneError(prefix + "the image claims " + std::to_string(width) + "x" + std::to_string(height) +
+                     " pixels from " + std::to_string(size) + " bytes, more than " +
+                     std::to_string(kMaxPixelsPerByte) + " pixels a byte: truncated or a decompression bomb");
   stbi_uc* pixels = stbi_load_from_memory(data, stb_size, &width, &height, &channels, 4);
   if (pixels == nullptr) {
     const char* reason = stbi_failure_reason();
