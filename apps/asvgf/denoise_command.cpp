@@ -9,6 +9,7 @@
 
 #include "asvgf/denoiser.hpp"
 #include "commands.hpp"
+#include "frame_files.hpp"
 #include "frame_sequence.hpp"
 #include "motion_check.hpp"
 #include "progress.hpp"
@@ -33,11 +34,6 @@ struct DenoiseOptions {
   bool quiet = false;
 };
 
-std::string frame_file(const char* prefix, int frame, const char* ext) {
-  char name[64];
-  std::snprintf(name, sizeof name, "%s_%04d.%s", prefix, frame, ext);
-  return name;
-}
 
 // --input DIR fills every pattern not given explicitly with DIR/<buffer>_%04d.exr (the gradient
 // only for asvgf, and only when DIR has one for the first frame) and reads the depth gradient.
@@ -68,11 +64,6 @@ bool has_gradient_samples(const render::ExrImage& image) {
   return false;
 }
 
-void write_metrics(const std::filesystem::path& dir, const std::string& csv) {
-  const auto tmp = dir / "metrics.csv.partial";
-  std::ofstream(tmp) << csv;
-  std::filesystem::rename(tmp, dir / "metrics.csv");
-}
 
 int run_denoise(DenoiseOptions& o) {
   apply_input_folder(o);
@@ -219,7 +210,7 @@ int run_denoise(DenoiseOptions& o) {
     }
     progress.step(i + 1, note);
   }
-  if (!reference.empty()) write_metrics(dir, csv.str());
+  if (!reference.empty()) write_metrics_csv(dir, csv.str());
   for (auto& in : inputs) device->destroy(in.image);
   if (gradient_image) device->destroy(gradient_image);
   device->destroy(radiance);

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "frame_files.hpp"
 #include "progress.hpp"
 #include "render/image_io.hpp"
 #include "render/metrics.hpp"
@@ -25,26 +26,21 @@ struct RenderOptions {
   bool quiet = false;
 };
 
-std::string frame_name(const char* prefix, int frame, const char* ext) {
-  char name[64];
-  std::snprintf(name, sizeof name, "%s_%04d.%s", prefix, frame, ext);
-  return name;
-}
 
 void write_frame(const std::filesystem::path& dir, const char* prefix, int frame, const render::FrameImages& img) {
-  render::write_exr(dir / frame_name(prefix, frame, "exr"), img.width, img.height, img.hdr);
-  render::write_png(dir / frame_name(prefix, frame, "png"), img.width, img.height, img.display);
+  render::write_exr(dir / frame_file(prefix, frame, "exr"), img.width, img.height, img.hdr);
+  render::write_png(dir / frame_file(prefix, frame, "png"), img.width, img.height, img.display);
 }
 
 // The denoiser's inputs of one frame as `asvgf denoise` reads them (see its --input).
 void write_aovs(const std::filesystem::path& dir, int frame, const render::AovImages& a, std::uint32_t w, std::uint32_t h) {
-  render::write_exr(dir / frame_name("color", frame, "exr"), w, h, a.illumination);
-  render::write_exr(dir / frame_name("albedo", frame, "exr"), w, h, a.albedo);
-  render::write_exr(dir / frame_name("normal", frame, "exr"), w, h, a.normal);
-  render::write_exr(dir / frame_name("depth", frame, "exr"), w, h, a.depth);
-  render::write_exr(dir / frame_name("motion", frame, "exr"), w, h, a.motion);
+  render::write_exr(dir / frame_file("color", frame, "exr"), w, h, a.illumination);
+  render::write_exr(dir / frame_file("albedo", frame, "exr"), w, h, a.albedo);
+  render::write_exr(dir / frame_file("normal", frame, "exr"), w, h, a.normal);
+  render::write_exr(dir / frame_file("depth", frame, "exr"), w, h, a.depth);
+  render::write_exr(dir / frame_file("motion", frame, "exr"), w, h, a.motion);
   if (!a.gradient_samples.empty())
-    render::write_exr(dir / frame_name("gradient", frame, "exr"), (w + 2) / 3, (h + 2) / 3, a.gradient_samples);
+    render::write_exr(dir / frame_file("gradient", frame, "exr"), (w + 2) / 3, (h + 2) / 3, a.gradient_samples);
 }
 
 int run_render(RenderOptions& o) {
@@ -118,10 +114,7 @@ int run_render(RenderOptions& o) {
       for (const auto& p : pass_columns) csv << "," << row[p];
       csv << "\n";
     }
-    const auto path = dir / "metrics.csv";
-    const auto tmp = dir / "metrics.csv.partial";
-    std::ofstream(tmp) << csv.str();
-    std::filesystem::rename(tmp, path);
+    write_metrics_csv(dir, csv.str());
   }
   const auto sanitised = renderer.dropped_samples();
   if (!o.quiet) {
