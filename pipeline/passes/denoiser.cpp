@@ -21,28 +21,23 @@ DenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipelines
   DenoiserOutputs out;
   out.filtered = in.illumination;
 
-  if (s.adaptive && s.gradient_source == GradientSource::Reprojected && filter != Filter::None) {
-    // Runs on every frame, still ones too: its luminance is the next frame's history.
-    const std::uint32_t gw = (w + 2) / 3, gh = (h + 2) / 3;
-    const ResourceId luminance = graph.add_image("noisy_luminance", w, h, F::R32F, Lifetime::Persistent);
+  const bool filtered = s.adaptive && filter != Filter::None;
+  const bool reprojected = filtered && s.gradient_source == GradientSource::Reprojected;
+  if (reprojected || (filtered && in.gradient_prev)) {
+    // Re-shaded: declared on still frames too, so that dump() shows them left out with the reason.
+    // Reprojected: runs on every frame, still ones too: its luminance is the next frame's history.
+    const bool skip = !reprojected && !in.gradient_skip_reason.empty();
+    const std::uint32_t gw = (w + 2) / 3, gh = (h + 2) / 3;  // one stratum per 3x3 pixels
     ResourceId current = graph.add_image("gradient", gw, gh, F::RGBA16F);
-    add_gradient_reprojected(graph, pipelines, {in.illumination, in.motion, in.depth_normal, luminance, current});
+    if (reprojected) {
+      const ResourceId luminance = graph.add_image("noisy_luminance", w, h, F::R32F, Lifetime::Persistent);
+      add_gradient_reprojected(graph, pipelines, {in.illumination, in.motion, in.depth_normal, luminance, current});
+    } else {
+      add_gradient(graph, pipelines, {in.illumination, *in.gradient_prev, current})
+          .skip_if(skip, in.gradient_skip_reason);
+    }
     for (int i = 0; i < s.gradient_iterations; ++i) {
       const ResourceId next = graph.add_image("gradient." + std::to_string(i + 1), gw, gh, F::RGBA16F);
-      add_gradient_atrous(graph, pipelines, {current, in.depth_normal, next}, i, s);
-      current = next;
-    }
-    out.gradient = current;
-  } else if (in.gradient_prev && s.adaptive && filter != Filter::None) {
-    // Declared on still frames too, so that dump() shows them left out with the reason.
-    const auto& strata = graph.resource(*in.gradient_prev);
-    const bool skip = !in.gradient_skip_reason.empty();
-    ResourceId current = graph.add_image("gradient", strata.width, strata.height, F::RGBA16F);
-    add_gradient(graph, pipelines, {in.illumination, *in.gradient_prev, current})
-        .skip_if(skip, in.gradient_skip_reason);
-    for (int i = 0; i < s.gradient_iterations; ++i) {
-      const ResourceId next =
-          graph.add_image("gradient." + std::to_string(i + 1), strata.width, strata.height, F::RGBA16F);
       add_gradient_atrous(graph, pipelines, {current, in.depth_normal, next}, i, s)
           .skip_if(skip, in.gradient_skip_reason);
       current = next;
