@@ -9,7 +9,9 @@
 namespace asvgf::render {
 namespace {
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+float luminance(const glm::vec3& c) {
+  return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+}
 
 template <typename T>
 std::span<const std::byte> bytes_of(const std::vector<T>& v) {
@@ -33,9 +35,11 @@ GpuCamera make_camera(const scene::CameraState& c, std::uint32_t width, std::uin
 SceneGpu::SceneGpu(hal::Device& device, const scene::Scene& scene, bool ray_query)
     : device_(device), scene_(scene), ray_query_(ray_query) {
   if (ray_query && !device.capabilities().ray_query)
-    throw hal::Error(hal::ErrorKind::Unsupported, scene.name, "ray-query tracing asked for on a device without ray queries");
+    throw hal::Error(hal::ErrorKind::Unsupported, scene.name,
+                     "ray-query tracing asked for on a device without ray queries");
   for (const auto& inst : scene.instances) triangle_count_ += scene.meshes.at(inst.mesh).triangle_count();
-  if (triangle_count_ == 0) throw hal::Error(hal::ErrorKind::InvalidDescriptor, scene.name, "the scene has no triangles");
+  if (triangle_count_ == 0)
+    throw hal::Error(hal::ErrorKind::InvalidDescriptor, scene.name, "the scene has no triangles");
   sphere_light_count_ = static_cast<std::uint32_t>(scene.sphere_lights.size());
 
   const std::uint64_t tri_bytes = std::uint64_t(triangle_count_) * sizeof(GpuTriangle);
@@ -46,10 +50,11 @@ SceneGpu::SceneGpu(hal::Device& device, const scene::Scene& scene, bool ray_quer
     const bool emissive = m.emission.r > 0 || m.emission.g > 0 || m.emission.b > 0;
     textured_ = textured_ || m.albedo_texture >= 0;
     materials.push_back({glm::vec4(m.albedo, static_cast<float>(m.albedo_texture + 1)),
-                         glm::vec4(m.emission, emissive ? 1.0f : 0.0f)});
+                         glm::vec4(m.emission, emissive ? 1.0f : 0.0f),
+                         glm::vec4(m.roughness, m.metallic, m.specular, 0.0f)});
   }
   upload_textures();
-  if (materials.empty()) materials.push_back({glm::vec4(0.8f), glm::vec4(0)});
+  if (materials.empty()) materials.push_back({glm::vec4(0.8f), glm::vec4(0), glm::vec4(1, 0, 0, 0)});
   materials_ = make_buffer("scene.materials", materials.size() * sizeof(GpuMaterial));
   device.upload_buffer(materials_, 0, bytes_of(materials));
 
@@ -162,8 +167,7 @@ std::vector<GpuLight> SceneGpu::gpu_lights(const scene::FrameState& state, const
   double total = 0;
   for (float p : power) total += p;
   for (std::size_t i = 0; i < lights.size(); ++i)
-    lights[i].pdf =
-        total > 0 ? static_cast<float>(power[i] / total) : 1.0f / static_cast<float>(lights.size());
+    lights[i].pdf = total > 0 ? static_cast<float>(power[i] / total) : 1.0f / static_cast<float>(lights.size());
   return lights;
 }
 
@@ -186,7 +190,8 @@ bool SceneGpu::update(float frame) {
                                        {previous_triangles_, hal::State::CopyDst, hal::State::ShaderRead}};
   if (!lights.empty()) to_read.push_back({lights_, hal::State::CopyDst, hal::State::ShaderRead});
   if (first_)
-    for (auto b : {materials_, triangle_uvs_, texels_}) to_read.push_back({b, hal::State::CopyDst, hal::State::ShaderRead});
+    for (auto b : {materials_, triangle_uvs_, texels_})
+      to_read.push_back({b, hal::State::CopyDst, hal::State::ShaderRead});
   std::vector<glm::vec3> corners;
   if (moved) {
     corners.reserve(3 * triangles.size());
@@ -198,7 +203,8 @@ bool SceneGpu::update(float frame) {
     commands->barrier({{accel_boxes_, hal::State::CopyDst, hal::State::AccelBuildInput},
                        {blas_, accel_state, hal::State::AccelWrite}});
     commands->build_blas(blas_, false);
-    commands->barrier({{blas_, hal::State::AccelWrite, hal::State::AccelRead}, {tlas_, accel_state, hal::State::AccelWrite}});
+    commands->barrier(
+        {{blas_, hal::State::AccelWrite, hal::State::AccelRead}, {tlas_, accel_state, hal::State::AccelWrite}});
     const hal::TlasInstance instance{blas_};
     commands->build_tlas(tlas_, std::span(&instance, 1), false);
     commands->barrier({tlas_, hal::State::AccelWrite, hal::State::AccelRead});

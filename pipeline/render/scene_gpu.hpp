@@ -25,6 +25,7 @@ struct GpuTriangle {
 struct GpuMaterial {
   glm::vec4 albedo;    // rgb, a = albedo texture index + 1 (0: untextured)
   glm::vec4 emission;  // rgb radiance, a = 1 when emissive
+  glm::vec4 surface;   // roughness, metallic, specular, 0
 };
 // Texture coordinates of a triangle's corners (zeros for meshes without uvs).
 struct GpuTriangleUv {
@@ -47,7 +48,7 @@ struct GpuLight {
   float area;               // emissive triangle: its area
   std::uint32_t pad0 = 0, pad1 = 0;
 };
-static_assert(sizeof(GpuTriangle) == 48 && sizeof(GpuMaterial) == 32 && sizeof(GpuLight) == 64);
+static_assert(sizeof(GpuTriangle) == 48 && sizeof(GpuMaterial) == 48 && sizeof(GpuLight) == 64);
 static_assert(sizeof(GpuTriangleUv) == 32 && sizeof(GpuTexture) == 16);
 
 // Camera as the shaders use it: a primary ray through pixel p is

@@ -75,7 +75,9 @@ Mesh box_mesh() {
   return mesh;
 }
 
-glm::quat yaw(float degrees) { return glm::angleAxis(glm::radians(degrees), glm::vec3(0.0f, 1.0f, 0.0f)); }
+glm::quat yaw(float degrees) {
+  return glm::angleAxis(glm::radians(degrees), glm::vec3(0.0f, 1.0f, 0.0f));
+}
 
 Instance instance(std::string name, std::uint32_t mesh, const Transform& t) {
   return Instance{std::move(name), mesh, {{0.0f, t}}};
@@ -135,9 +137,13 @@ Scene cornell(const std::string& animation) {
 
 }  // namespace
 
-std::vector<std::string> builtin_scenes() { return {"cornell"}; }
+std::vector<std::string> builtin_scenes() {
+  return {"cornell"};
+}
 
-std::vector<std::string> builtin_animations() { return {"static", "light-exit", "orbit", "boxes-move"}; }
+std::vector<std::string> builtin_animations() {
+  return {"static", "light-exit", "orbit", "boxes-move"};
+}
 
 Scene builtin_scene(const std::string& name, const std::string& animation) {
   if (name == "cornell") return cornell(animation);

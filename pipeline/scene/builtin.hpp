@@ -25,7 +25,7 @@
 namespace asvgf::scene {
 
 inline constexpr int kCornellFrameCount = 24;
-inline constexpr float kCornellHalfExtent = 1.0f;     // the room spans [-1,1] on every axis
+inline constexpr float kCornellHalfExtent = 1.0f;  // the room spans [-1,1] on every axis
 inline constexpr float kCornellLightRadius = 0.12f;
 inline constexpr float kCornellLightRadiance = 80.0f;  // per channel, see builtin.cpp
 

@@ -28,7 +28,8 @@ namespace {
 bool decode_gltf_image(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
                        const unsigned char* bytes, int size, void*) {
   try {
-    Texture tex = decode_image(bytes, static_cast<std::size_t>(std::max(size, 0)), "image " + std::to_string(index) + ": ");
+    Texture tex =
+        decode_image(bytes, static_cast<std::size_t>(std::max(size, 0)), "image " + std::to_string(index) + ": ");
     image->width = static_cast<int>(tex.width);
     image->height = static_cast<int>(tex.height);
     image->component = 4;
@@ -106,7 +107,8 @@ struct Importer {
       fail(where, "has no valid bufferView");
     }
     const tinygltf::BufferView& bv = model.bufferViews[static_cast<std::size_t>(a.bufferView)];
-    if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= model.buffers.size()) fail(where, "bufferView has no valid buffer");
+    if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= model.buffers.size())
+      fail(where, "bufferView has no valid buffer");
     const tinygltf::Buffer& buffer = model.buffers[static_cast<std::size_t>(bv.buffer)];
     const int stride = a.ByteStride(bv);
     const int component_size = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType));
@@ -131,12 +133,15 @@ struct Importer {
 
   int texture(int index, const std::string& place) {
     if (auto it = texture_of.find(index); it != texture_of.end()) return it->second;
-    if (index < 0 || static_cast<std::size_t>(index) >= model.textures.size()) fail(place, "texture index out of range");
+    if (index < 0 || static_cast<std::size_t>(index) >= model.textures.size())
+      fail(place, "texture index out of range");
     const int source = model.textures[static_cast<std::size_t>(index)].source;
     if (source < 0 || static_cast<std::size_t>(source) >= model.images.size()) fail(place, "texture has no image");
     const tinygltf::Image& img = model.images[static_cast<std::size_t>(source)];
-    if (img.width <= 0 || img.height <= 0 || img.component < 1 || img.component > 4 || (img.bits != 8 && img.bits != 16)) {
-      fail(place, "image " + std::to_string(source) + " ('" + img.name + img.uri + "') is not decoded 8/16-bit image data");
+    if (img.width <= 0 || img.height <= 0 || img.component < 1 || img.component > 4 ||
+        (img.bits != 8 && img.bits != 16)) {
+      fail(place,
+           "image " + std::to_string(source) + " ('" + img.name + img.uri + "') is not decoded 8/16-bit image data");
     }
     Texture tex;
     tex.name = img.uri.empty() ? img.name : img.uri;
@@ -144,7 +149,8 @@ struct Importer {
     tex.height = static_cast<std::uint32_t>(img.height);
     const std::size_t pixels = std::size_t{tex.width} * tex.height, bytes = static_cast<std::size_t>(img.bits / 8);
     const auto comps = static_cast<std::size_t>(img.component);
-    if (img.image.size() < pixels * comps * bytes) fail(place, "image " + std::to_string(source) + " has too little data");
+    if (img.image.size() < pixels * comps * bytes)
+      fail(place, "image " + std::to_string(source) + " has too little data");
     tex.rgba8.resize(pixels * 4);
     for (std::size_t p = 0; p < pixels; ++p) {
       std::uint8_t c[4] = {0, 0, 0, 255};
@@ -167,13 +173,25 @@ struct Importer {
     if (index < 0) {
       mat.name = "default";
     } else {
-      if (static_cast<std::size_t>(index) >= model.materials.size()) fail(place, "material " + std::to_string(index) + " out of range");
+      if (static_cast<std::size_t>(index) >= model.materials.size())
+        fail(place, "material " + std::to_string(index) + " out of range");
       const tinygltf::Material& src = model.materials[static_cast<std::size_t>(index)];
       const std::string mplace = "material " + std::to_string(index) + " ('" + src.name + "')";
       mat.name = src.name.empty() ? "material" + std::to_string(index) : src.name;
       const auto& base = src.pbrMetallicRoughness.baseColorFactor;
       if (base.size() >= 3) mat.albedo = {base[0], base[1], base[2]};
-      if (src.emissiveFactor.size() >= 3) mat.emission = {src.emissiveFactor[0], src.emissiveFactor[1], src.emissiveFactor[2]};
+      // glTF's model has the GGX lobe always: metallic and roughness default to 1, the dielectric
+      // specular factor (KHR_materials_specular) to 1. Their textures are not read (factors only).
+      mat.metallic = static_cast<float>(src.pbrMetallicRoughness.metallicFactor);
+      mat.roughness = static_cast<float>(src.pbrMetallicRoughness.roughnessFactor);
+      mat.specular = 1.0f;
+      if (auto ext = src.extensions.find("KHR_materials_specular"); ext != src.extensions.end()) {
+        if (ext->second.Has("specularFactor")) {
+          mat.specular = static_cast<float>(ext->second.Get("specularFactor").GetNumberAsDouble());
+        }
+      }
+      if (src.emissiveFactor.size() >= 3)
+        mat.emission = {src.emissiveFactor[0], src.emissiveFactor[1], src.emissiveFactor[2]};
       if (auto ext = src.extensions.find("KHR_materials_emissive_strength"); ext != src.extensions.end()) {
         if (ext->second.Has("emissiveStrength")) {
           mat.emission *= static_cast<float>(ext->second.Get("emissiveStrength").GetNumberAsDouble());
@@ -196,7 +214,8 @@ struct Importer {
     const auto pos = prim.attributes.find("POSITION");
     if (pos == prim.attributes.end()) fail(place, "has no POSITION attribute");
     const View p = view(pos->second, place + " POSITION");
-    if (p.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT || p.components != 3) fail(place, "POSITION is not float VEC3");
+    if (p.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT || p.components != 3)
+      fail(place, "POSITION is not float VEC3");
     View uv;
     if (const auto t = prim.attributes.find("TEXCOORD_0"); t != prim.attributes.end()) {
       uv = view(t->second, place + " TEXCOORD_0");
@@ -259,12 +278,14 @@ struct Importer {
   }
 
   void node(int index, const glm::mat4& parent, int depth) {
-    if (index < 0 || static_cast<std::size_t>(index) >= model.nodes.size()) fail("node " + std::to_string(index), "out of range");
+    if (index < 0 || static_cast<std::size_t>(index) >= model.nodes.size())
+      fail("node " + std::to_string(index), "out of range");
     if (depth > 64) fail("node " + std::to_string(index), "node hierarchy deeper than 64 (a cycle?)");
     const tinygltf::Node& n = model.nodes[static_cast<std::size_t>(index)];
     const glm::mat4 world = parent * local_matrix(n);
     if (n.mesh >= 0) {
-      if (static_cast<std::size_t>(n.mesh) >= model.meshes.size()) fail("node " + std::to_string(index), "mesh index out of range");
+      if (static_cast<std::size_t>(n.mesh) >= model.meshes.size())
+        fail("node " + std::to_string(index), "mesh index out of range");
       const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(n.mesh)];
       for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
         primitive(mesh.primitives[p], world,
@@ -303,7 +324,8 @@ ImportedMesh import_gltf(const std::filesystem::path& file, const std::string& w
     // No scene: every mesh once, untransformed.
     for (std::size_t m = 0; m < model.meshes.size(); ++m) {
       for (std::size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
-        im.primitive(model.meshes[m].primitives[p], glm::mat4(1.0f), "mesh " + std::to_string(m) + " primitive " + std::to_string(p));
+        im.primitive(model.meshes[m].primitives[p], glm::mat4(1.0f),
+                     "mesh " + std::to_string(m) + " primitive " + std::to_string(p));
       }
     }
   }

@@ -136,8 +136,8 @@ Texture decode_image(const unsigned char* data, std::size_t size, const std::str
                      "; textures may be at most " + std::to_string(kMaxTextureSide) + " on a side");
   if (std::uint64_t(std::max(width, 0)) * std::uint64_t(std::max(height, 0)) > kMaxPixelsPerByte * size)
     throw SceneError(prefix + "the image claims " + std::to_string(width) + "x" + std::to_string(height) +
-                     " pixels from " + std::to_string(size) + " bytes, more than " +
-                     std::to_string(kMaxPixelsPerByte) + " pixels a byte: truncated or a decompression bomb");
+                     " pixels from " + std::to_string(size) + " bytes, more than " + std::to_string(kMaxPixelsPerByte) +
+                     " pixels a byte: truncated or a decompression bomb");
   stbi_uc* pixels = stbi_load_from_memory(data, stb_size, &width, &height, &channels, 4);
   if (pixels == nullptr) {
     const char* reason = stbi_failure_reason();

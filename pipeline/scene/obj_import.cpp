@@ -57,7 +57,8 @@ ImportedMesh import_obj(const std::filesystem::path& file, const std::string& wh
   config.vertex_color = false;
   config.mtl_search_path = file.parent_path().string();
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(file.string(), config)) throw SceneError(prefix + "cannot parse OBJ: " + trim(reader.Error()));
+  if (!reader.ParseFromFile(file.string(), config))
+    throw SceneError(prefix + "cannot parse OBJ: " + trim(reader.Error()));
   // A missing MTL file or an out-of-range face index is only a warning for tinyobjloader; here they
   // would silently drop materials or faces. (A `usemtl` the MTL lacks is common: "default" material.)
   for (const char* fatal : {"not found in a path", "out of bounds"}) {
@@ -85,7 +86,8 @@ ImportedMesh import_obj(const std::filesystem::path& file, const std::string& wh
     for (std::size_t f = 0; f < faces.size(); ++f) {
       std::ostringstream place;
       place << "shape '" << shape.name << "' face " << f;
-      if (faces[f] != 3) throw SceneError(prefix + place.str() + ": has " + std::to_string(faces[f]) + " vertices after triangulation");
+      if (faces[f] != 3)
+        throw SceneError(prefix + place.str() + ": has " + std::to_string(faces[f]) + " vertices after triangulation");
       for (std::size_t c = 0; c < 3; ++c) {
         const tinyobj::index_t idx = shape.mesh.indices[offset + c];
         if (idx.vertex_index < 0 || static_cast<std::size_t>(idx.vertex_index) >= vertex_count) {
@@ -93,8 +95,9 @@ ImportedMesh import_obj(const std::filesystem::path& file, const std::string& wh
                            " out of range (" + std::to_string(vertex_count) + " vertices)");
         }
         if (idx.texcoord_index >= 0 && static_cast<std::size_t>(idx.texcoord_index) >= uv_count) {
-          throw SceneError(prefix + place.str() + ": texture coordinate index " + std::to_string(idx.texcoord_index + 1) +
-                           " out of range (" + std::to_string(uv_count) + " texture coordinates)");
+          throw SceneError(prefix + place.str() + ": texture coordinate index " +
+                           std::to_string(idx.texcoord_index + 1) + " out of range (" + std::to_string(uv_count) +
+                           " texture coordinates)");
         }
         const auto key = std::make_pair(idx.vertex_index, idx.texcoord_index);
         auto it = remap.find(key);

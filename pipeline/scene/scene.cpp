@@ -48,8 +48,8 @@ T sample(const std::vector<Keyframe<T>>& keys, float frame) {
   if (keys.empty()) return T{};
   if (frame <= keys.front().frame) return keys.front().value;
   if (frame >= keys.back().frame) return keys.back().value;
-  const auto next = std::upper_bound(keys.begin(), keys.end(), frame,
-                                     [](float f, const Keyframe<T>& k) { return f < k.frame; });
+  const auto next =
+      std::upper_bound(keys.begin(), keys.end(), frame, [](float f, const Keyframe<T>& k) { return f < k.frame; });
   const auto prev = next - 1;
   const float span = next->frame - prev->frame;
   if (!(span > 0.0f)) return next->value;
@@ -75,9 +75,15 @@ template <typename... Args>
   throw SceneError(s.str());
 }
 
-bool finite(float v) { return std::isfinite(v); }
-bool finite(const glm::vec3& v) { return finite(v.x) && finite(v.y) && finite(v.z); }
-bool finite(const glm::quat& q) { return finite(q.w) && finite(q.x) && finite(q.y) && finite(q.z); }
+bool finite(float v) {
+  return std::isfinite(v);
+}
+bool finite(const glm::vec3& v) {
+  return finite(v.x) && finite(v.y) && finite(v.z);
+}
+bool finite(const glm::quat& q) {
+  return finite(q.w) && finite(q.x) && finite(q.y) && finite(q.z);
+}
 
 std::string str(const glm::vec3& v) {
   std::ostringstream s;
@@ -94,7 +100,9 @@ std::string label(const char* kind, const std::string& name, std::size_t index) 
   return s.str();
 }
 
-bool non_negative(const glm::vec3& v) { return finite(v) && v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f; }
+bool non_negative(const glm::vec3& v) {
+  return finite(v) && v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f;
+}
 
 bool valid_emission(const glm::vec3& v) {
   return non_negative(v) && v.x <= kMaxEmission && v.y <= kMaxEmission && v.z <= kMaxEmission;
@@ -160,7 +168,8 @@ void check_mesh(const std::string& where, const Scene& scene, std::size_t m) {
 FrameState evaluate(const Scene& scene, float frame) {
   FrameState state;
   state.instance_transforms.reserve(scene.instances.size());
-  for (const Instance& instance : scene.instances) state.instance_transforms.push_back(sample(instance.transform, frame).matrix());
+  for (const Instance& instance : scene.instances)
+    state.instance_transforms.push_back(sample(instance.transform, frame).matrix());
   state.lights.reserve(scene.sphere_lights.size());
   for (const SphereLight& light : scene.sphere_lights) state.lights.push_back(sample(light.state, frame));
   state.camera = sample(scene.camera, frame);
@@ -193,6 +202,11 @@ void validate(const Scene& scene, const std::string& where) {
       fail(where, who, ": albedo ", str(mat.albedo), " must be finite and in [0, 1]");
     }
     if (!valid_emission(mat.emission)) fail(where, who, ": emission ", str(mat.emission), kEmissionRange);
+    const std::pair<const char*, float> unit_params[] = {
+        {"roughness", mat.roughness}, {"metallic", mat.metallic}, {"specular", mat.specular}};
+    for (const auto& [param, value] : unit_params) {
+      if (!(value >= 0.0f && value <= 1.0f)) fail(where, who, ": ", param, " ", value, " must be in [0, 1]");
+    }
     if (mat.albedo_texture < -1 || mat.albedo_texture >= static_cast<int>(scene.textures.size())) {
       fail(where, who, ": albedo texture index ", mat.albedo_texture, " out of range (", scene.textures.size(),
            " textures)");
@@ -213,7 +227,8 @@ void validate(const Scene& scene, const std::string& where) {
       if (!finite(tr.translation) || !finite(tr.rotation) || !finite(tr.scale)) {
         fail(where, who, ": keyframe ", k, ": transform is not finite");
       }
-      if (std::abs(glm::length(tr.rotation) - 1.0f) > 1e-3f) fail(where, who, ": keyframe ", k, ": rotation is not a unit quaternion");
+      if (std::abs(glm::length(tr.rotation) - 1.0f) > 1e-3f)
+        fail(where, who, ": keyframe ", k, ": rotation is not a unit quaternion");
       // World space at each keyframe (between keyframes positions are interpolated).
       const glm::mat4 m = tr.matrix();
       const Mesh& mesh = scene.meshes[inst.mesh];
@@ -236,10 +251,13 @@ void validate(const Scene& scene, const std::string& where) {
     for (std::size_t k = 0; k < light.state.size(); ++k) {
       const SphereLightState& s = light.state[k].value;
       if (!finite(s.position)) fail(where, who, ": keyframe ", k, ": position is not finite");
-      if (!(s.radius > 0.0f) || !finite(s.radius)) fail(where, who, ": keyframe ", k, ": radius ", s.radius, " must be > 0");
+      if (!(s.radius > 0.0f) || !finite(s.radius))
+        fail(where, who, ": keyframe ", k, ": radius ", s.radius, " must be > 0");
       if (!in_coordinate_range(glm::abs(s.position) + s.radius))
-        fail(where, who, ": keyframe ", k, ": the sphere at ", str(s.position), " of radius ", s.radius, kCoordinateRange);
-      if (!valid_emission(s.emission)) fail(where, who, ": keyframe ", k, ": emission ", str(s.emission), kEmissionRange);
+        fail(where, who, ": keyframe ", k, ": the sphere at ", str(s.position), " of radius ", s.radius,
+             kCoordinateRange);
+      if (!valid_emission(s.emission))
+        fail(where, who, ": keyframe ", k, ": emission ", str(s.emission), kEmissionRange);
     }
   }
 
@@ -247,14 +265,17 @@ void validate(const Scene& scene, const std::string& where) {
   for (std::size_t k = 0; k < scene.camera.size(); ++k) {
     const CameraState& c = scene.camera[k].value;
     if (!finite(c.position) || !finite(c.target) || !finite(c.up)) fail(where, "camera: keyframe ", k, ": not finite");
-    if (!in_coordinate_range(c.position)) fail(where, "camera: keyframe ", k, ": position ", str(c.position), kCoordinateRange);
-    if (!in_coordinate_range(c.target)) fail(where, "camera: keyframe ", k, ": target ", str(c.target), kCoordinateRange);
+    if (!in_coordinate_range(c.position))
+      fail(where, "camera: keyframe ", k, ": position ", str(c.position), kCoordinateRange);
+    if (!in_coordinate_range(c.target))
+      fail(where, "camera: keyframe ", k, ": target ", str(c.target), kCoordinateRange);
     if (glm::length(c.target - c.position) <= 0.0f) fail(where, "camera: keyframe ", k, ": target equals position");
     if (glm::length(glm::cross(c.target - c.position, c.up)) <= 1e-6f * glm::length(c.target - c.position)) {
       fail(where, "camera: keyframe ", k, ": up is zero or parallel to the view direction");
     }
     if (!(c.vertical_fov_degrees > 0.0f && c.vertical_fov_degrees < 180.0f)) {
-      fail(where, "camera: keyframe ", k, ": vertical field of view ", c.vertical_fov_degrees, " must be in (0, 180) degrees");
+      fail(where, "camera: keyframe ", k, ": vertical field of view ", c.vertical_fov_degrees,
+           " must be in (0, 180) degrees");
     }
   }
 }

@@ -39,19 +39,26 @@ struct Texture {
 constexpr float kMaxEmission = 65504.0f;
 constexpr float kMaxCoordinate = 1073741824.0f;  // 2^30
 
+// Lambertian by default. metallic or specular above 0 adds glTF's GGX lobe (metallic-roughness
+// model, shaders/common/bsdf.glsl): albedo is then the base colour, a metal's Fresnel colour where
+// metallic = 1. All three in [0, 1].
 struct Material {
   std::string name;
-  glm::vec3 albedo{0.8f};    // diffuse reflectance in [0,1]
+  glm::vec3 albedo{0.8f};    // diffuse reflectance (base colour) in [0,1]
   glm::vec3 emission{0.0f};  // emitted radiance (W/(sr m^2)) in [0, kMaxEmission]; > 0 makes every triangle a light
   int albedo_texture = -1;   // index into Scene::textures, multiplies albedo; -1: none
+  float roughness = 1.0f;    // perceptual roughness (GGX alpha = roughness^2, at least 0.002)
+  float metallic = 0.0f;     // 0 dielectric, 1 metal
+  float specular = 0.0f;     // dielectric reflectance factor: 0.04 * specular at normal incidence (glTF: 1)
+  bool glossy() const { return metallic > 0.0f || specular > 0.0f; }
 };
 
 struct Mesh {
   std::string name;
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec2> uvs;               // empty, or one per position; v = 0 is the texture's top row
-  std::vector<std::uint32_t> indices;       // three per triangle
-  std::vector<std::uint32_t> materials;     // one material index per triangle
+  std::vector<glm::vec2> uvs;            // empty, or one per position; v = 0 is the texture's top row
+  std::vector<std::uint32_t> indices;    // three per triangle
+  std::vector<std::uint32_t> materials;  // one material index per triangle
   std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(indices.size() / 3); }
 };
 

@@ -32,7 +32,9 @@ std::string child(const std::string& ptr, const std::string& key) {
   for (char c : key) escaped += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
   return ptr + "/" + escaped;
 }
-std::string child(const std::string& ptr, std::size_t index) { return ptr + "/" + std::to_string(index); }
+std::string child(const std::string& ptr, std::size_t index) {
+  return ptr + "/" + std::to_string(index);
+}
 
 class Reader {
  public:
@@ -71,12 +73,14 @@ class Reader {
     return static_cast<float>(d);
   }
   std::uint32_t index(const json& j, const std::string& ptr) const {
-    if (!j.is_number_unsigned() || j.get<std::uint64_t>() > UINT32_MAX) fail(ptr, "expected a non-negative integer, got " + j.dump());
+    if (!j.is_number_unsigned() || j.get<std::uint64_t>() > UINT32_MAX)
+      fail(ptr, "expected a non-negative integer, got " + j.dump());
     return j.get<std::uint32_t>();
   }
   template <int N>
   glm::vec<N, float> vec(const json& j, const std::string& ptr) const {
-    if (!j.is_array() || j.size() != N || !std::all_of(j.begin(), j.end(), [](const json& e) { return e.is_number(); })) {
+    if (!j.is_array() || j.size() != N ||
+        !std::all_of(j.begin(), j.end(), [](const json& e) { return e.is_number(); })) {
       fail(ptr, "expected an array of " + std::to_string(N) + " numbers");
     }
     glm::vec<N, float> v;
@@ -156,7 +160,8 @@ class Loader {
     try {
       return json::parse(text.str());
     } catch (const json::parse_error& e) {
-      throw SceneError(r_.file() + ":" + line_column(text.str(), e.byte) + ": malformed JSON: " + parse_problem(e.what()));
+      throw SceneError(r_.file() + ":" + line_column(text.str(), e.byte) +
+                       ": malformed JSON: " + parse_problem(e.what()));
     } catch (const json::exception& e) {
       throw SceneError(r_.file() + ": malformed JSON: " + parse_problem(e.what()));
     }
@@ -183,15 +188,23 @@ class Loader {
   }
 
   void material(const json& j, const std::string& ptr) {
-    r_.object(j, ptr, {"name", "albedo", "emission", "albedo_texture"});
+    r_.object(j, ptr, {"name", "albedo", "emission", "albedo_texture", "roughness", "metallic", "specular"});
     Material m;
     m.name = r_.string(r_.required(j, ptr, "name"), child(ptr, "name"));
     if (material_index_.count(m.name)) r_.fail(child(ptr, "name"), "duplicate material name '" + m.name + "'");
     if (j.contains("albedo")) {
       m.albedo = r_.color(j["albedo"], child(ptr, "albedo"));
-      if (m.albedo.x > 1.0f || m.albedo.y > 1.0f || m.albedo.z > 1.0f) r_.fail(child(ptr, "albedo"), "must be in [0, 1]");
+      if (m.albedo.x > 1.0f || m.albedo.y > 1.0f || m.albedo.z > 1.0f)
+        r_.fail(child(ptr, "albedo"), "must be in [0, 1]");
     }
     if (j.contains("emission")) m.emission = r_.color(j["emission"], child(ptr, "emission"));
+    const std::pair<const char*, float*> surface_params[] = {
+        {"roughness", &m.roughness}, {"metallic", &m.metallic}, {"specular", &m.specular}};
+    for (const auto& [key, value] : surface_params) {
+      if (!j.contains(key)) continue;
+      *value = r_.number(j[key], child(ptr, key));
+      if (!(*value >= 0.0f && *value <= 1.0f)) r_.fail(child(ptr, key), "must be in [0, 1]");
+    }
     if (j.contains("albedo_texture")) {
       const std::string p = child(ptr, "albedo_texture");
       m.albedo_texture = texture_file(r_.string(j["albedo_texture"], p), p);
@@ -212,7 +225,8 @@ class Loader {
       const std::string fptr = child(ptr, "file");
       const std::filesystem::path file = dir_ / r_.string(j["file"], fptr);
       std::string ext = file.extension().string();
-      std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      std::transform(ext.begin(), ext.end(), ext.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
       detail::ImportedMesh im;
       const std::string where = r_.file() + ": " + fptr;
       if (ext == ".obj") {
@@ -257,7 +271,8 @@ class Loader {
       for (std::size_t c = 0; c < 3; ++c) {
         const std::uint32_t v = r_.index(indices[t][c], child(tptr, c));
         if (v >= m.positions.size()) {
-          r_.fail(child(tptr, c), "index " + std::to_string(v) + " out of range (" + std::to_string(m.positions.size()) + " positions)");
+          r_.fail(child(tptr, c), "index " + std::to_string(v) + " out of range (" +
+                                      std::to_string(m.positions.size()) + " positions)");
         }
         m.indices.push_back(v);
       }
@@ -265,7 +280,8 @@ class Loader {
     if (j.contains("uvs")) {
       const std::string uptr = child(ptr, "uvs");
       const json& uvs = r_.array(j["uvs"], uptr);
-      if (uvs.size() != positions.size()) r_.fail(uptr, "expected one uv per position (" + std::to_string(positions.size()) + ")");
+      if (uvs.size() != positions.size())
+        r_.fail(uptr, "expected one uv per position (" + std::to_string(positions.size()) + ")");
       for (std::size_t i = 0; i < uvs.size(); ++i) m.uvs.push_back(r_.vec<2>(uvs[i], child(uptr, i)));
     }
   }
@@ -285,8 +301,8 @@ class Loader {
       if (!keys[k].is_object()) r_.fail(kptr, std::string("expected an object, got ") + keys[k].type_name());
       const float frame = r_.number(r_.required(keys[k], kptr, "frame"), child(kptr, "frame"));
       if (!out.empty() && !(frame > out.back().frame)) {
-        r_.fail(child(kptr, "frame"), "keyframes must have increasing frames (" + std::to_string(frame) +
-                                           " after " + std::to_string(out.back().frame) + ")");
+        r_.fail(child(kptr, "frame"), "keyframes must have increasing frames (" + std::to_string(frame) + " after " +
+                                          std::to_string(out.back().frame) + ")");
       }
       read(keys[k], kptr, value, k == 0);
       out.push_back({frame, value});
@@ -300,7 +316,8 @@ class Loader {
     if (with_frame) keys.push_back("frame");
     r_.object(j, ptr, keys);
     if (j.contains("translation")) t.translation = r_.vec<3>(j["translation"], child(ptr, "translation"));
-    if (j.contains("rotation_degrees") && j.contains("rotation_quat")) r_.fail(ptr, "give either 'rotation_degrees' or 'rotation_quat', not both");
+    if (j.contains("rotation_degrees") && j.contains("rotation_quat"))
+      r_.fail(ptr, "give either 'rotation_degrees' or 'rotation_quat', not both");
     if (j.contains("rotation_degrees")) {
       // Degrees about x, then y, then z (world axes): q = qz * qy * qx.
       const glm::vec3 d = glm::radians(r_.vec<3>(j["rotation_degrees"], child(ptr, "rotation_degrees")));
@@ -333,12 +350,12 @@ class Loader {
     }
     inst.mesh = it->second;
     inst.name = j.contains("name") ? r_.string(j["name"], child(ptr, "name")) : mesh_name;
-    if (j.contains("transform") && j.contains("keyframes")) r_.fail(ptr, "give either 'transform' or 'keyframes', not both");
+    if (j.contains("transform") && j.contains("keyframes"))
+      r_.fail(ptr, "give either 'transform' or 'keyframes', not both");
     if (j.contains("keyframes")) {
-      inst.transform = keyframes<Transform>(j["keyframes"], child(ptr, "keyframes"), Transform{},
-                                            [&](const json& k, const std::string& kptr, Transform& t, bool) {
-                                              transform_fields(k, kptr, t, true);
-                                            });
+      inst.transform = keyframes<Transform>(
+          j["keyframes"], child(ptr, "keyframes"), Transform{},
+          [&](const json& k, const std::string& kptr, Transform& t, bool) { transform_fields(k, kptr, t, true); });
     } else {
       Transform t;
       if (j.contains("transform")) transform_fields(j["transform"], child(ptr, "transform"), t, false);
@@ -370,16 +387,16 @@ class Loader {
     if (j.contains("type")) {
       const std::string type = r_.string(j["type"], child(ptr, "type"));
       if (type != "sphere") {
-        r_.fail(child(ptr, "type"), "unknown light type '" + type + "' (only 'sphere'; emissive triangles come from materials with 'emission')");
+        r_.fail(child(ptr, "type"), "unknown light type '" + type +
+                                        "' (only 'sphere'; emissive triangles come from materials with 'emission')");
       }
     }
     if (j.contains("name")) l.name = r_.string(j["name"], child(ptr, "name"));
     if (j.contains("keyframes")) {
       r_.object(j, ptr, {"name", "type", "keyframes"});
       l.state = keyframes<SphereLightState>(j["keyframes"], child(ptr, "keyframes"), SphereLightState{},
-                                            [&](const json& k, const std::string& kptr, SphereLightState& s, bool first) {
-                                              light_fields(k, kptr, s, first, {"frame"});
-                                            });
+                                            [&](const json& k, const std::string& kptr, SphereLightState& s,
+                                                bool first) { light_fields(k, kptr, s, first, {"frame"}); });
     } else {
       SphereLightState s;
       light_fields(j, ptr, s, true, {"name", "type", "keyframes"});
@@ -401,7 +418,8 @@ class Loader {
     if (j.contains("up")) c.up = r_.vec<3>(j["up"], child(ptr, "up"));
     if (j.contains("fov_degrees")) {
       c.vertical_fov_degrees = r_.number(j["fov_degrees"], child(ptr, "fov_degrees"));
-      if (!(c.vertical_fov_degrees > 0.0f && c.vertical_fov_degrees < 180.0f)) r_.fail(child(ptr, "fov_degrees"), "must be in (0, 180)");
+      if (!(c.vertical_fov_degrees > 0.0f && c.vertical_fov_degrees < 180.0f))
+        r_.fail(child(ptr, "fov_degrees"), "must be in (0, 180)");
     }
   }
 
@@ -429,6 +447,8 @@ class Loader {
 
 }  // namespace
 
-Scene load_scene_file(const std::filesystem::path& json_path) { return Loader(json_path).load(); }
+Scene load_scene_file(const std::filesystem::path& json_path) {
+  return Loader(json_path).load();
+}
 
 }  // namespace asvgf::scene

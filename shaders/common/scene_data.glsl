@@ -15,6 +15,7 @@ struct Triangle {
 struct Material {
   vec4 albedo;
   vec4 emission;  // a = 1 when emissive
+  vec4 surface;   // roughness, metallic, specular (common/bsdf.glsl), 0
 };
 
 struct Light {

@@ -1,7 +1,7 @@
-// pathtrace: 1 spp (or `spp` for references) of diffuse path tracing from the primary hit in the
+// pathtrace: 1 spp (or `spp` for references) of path tracing from the primary hit in the
 // visibility buffer: next-event estimation to sphere lights and emissive triangles combined with
-// cosine-weighted BSDF sampling by multiple importance sampling (power heuristic), Russian
-// roulette after two bounces. Writes demodulated illumination (radiance / demodulation_albedo,
+// BSDF sampling (cosine-weighted on Lambertian surfaces, common/bsdf.glsl's lobe mixture on glossy
+// ones) by multiple importance sampling (power heuristic), Russian roulette after two bounces. Writes demodulated illumination (radiance / demodulation_albedo,
 // guarded) and the random seed each pixel used. With GRADIENT_SAMPLES, pixels that gradient_select gave a
 // carried seed start from last frame's surface point with last frame's seed instead.
 #version 460
@@ -89,10 +89,30 @@ vec3 spawn_origin(Triangle t, vec2 b, vec3 n) {
 // test may round either way (relative, so independent of scale too).
 const float kShadowEnd = 1.0 - 1.0 / 4096.0;
 
-// Radiance arriving at a surface point (normal n, facing the incoming side) from one light sample,
-// MIS-weighted against BSDF sampling; x is the point's spawn_origin. Skips the emissive triangle
-// `self` (no self-illumination); shadow rays skip it too.
-vec3 sample_light(vec3 x, vec3 n, uint self, inout uint state) {
+// The BSDF at a path vertex: Lambertian (its albedo applied by the caller) or glossy, with the
+// shading frame (t, b, n) and the direction back along the path in that frame.
+struct Vertex {
+  bool glossy;
+  Glossy model;
+  vec3 t;
+  vec3 b;
+  vec3 v;  // towards the previous vertex, in (t, b, n)
+};
+
+Vertex make_vertex(uint tri, vec3 n, vec3 v_world, vec3 albedo) {
+  Vertex s;
+  s.glossy = triangle_glossy(tri);
+  s.model = triangle_glossy_model(tri, albedo);
+  basis(n, s.t, s.b);
+  s.v = vec3(dot(v_world, s.t), dot(v_world, s.b), max(dot(v_world, n), 1e-6));
+  return s;
+}
+
+// One light sample's radiance at a surface point (normal n, facing the incoming side), MIS-weighted
+// against BSDF sampling; x is the point's spawn_origin. On a Lambertian vertex the result still
+// needs the albedo (Le cos / (pi pdf) w), on a glossy one it is complete (Le f cos / pdf w). Skips
+// the emissive triangle `self` (no self-illumination); shadow rays skip it too.
+vec3 sample_light(vec3 x, vec3 n, uint self, Vertex vertex, inout uint state) {
   if (params.light_count == 0u) return vec3(0.0);
   // Pick a light by its probability (power).
   float u = next_random(state);
@@ -139,12 +159,16 @@ vec3 sample_light(vec3 x, vec3 n, uint self, inout uint state) {
   }
   float cos_x = dot(n, dir);
   if (cos_x <= 0.0) return vec3(0.0);
+  vec3 f_cos = vec3(cos_x / kPi);
+  float pdf_bsdf = cos_x / kPi;
+  if (vertex.glossy) {
+    f_cos = glossy_f_cos(vertex.model, vertex.v, vec3(dot(dir, vertex.t), dot(dir, vertex.b), cos_x), pdf_bsdf);
+    if (pdf_bsdf <= 0.0) return vec3(0.0);
+  }
   rays_traced += 1u;
   if (trace_any(x, dir, 0.0, dist * kShadowEnd, self)) return vec3(0.0);
-  float pdf_bsdf = cos_x / kPi;
   float w = power_heuristic(pdf_light, pdf_bsdf);
-  // f = albedo / pi is applied by the caller (throughput); here: Le * cos / pdf * weight / pi.
-  return l.emission * (cos_x / kPi) / pdf_light * w;
+  return l.emission * f_cos / pdf_light * w;
 }
 
 // Light pdf (per solid angle) of hitting emissive triangle `tri` from x along dir at distance t.
@@ -161,19 +185,34 @@ float emissive_triangle_pdf(uint tri, vec3 x, vec3 dir, float t) {
 }
 
 // One path from a known first surface point (triangle tri at barycentrics b, normal n facing the
-// viewer); returns radiance towards the camera.
-vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 albedo, vec3 emission, inout uint state) {
+// viewer v); returns radiance towards the camera.
+vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 v, vec3 albedo, vec3 emission, inout uint state) {
   vec3 radiance = emission;
   vec3 throughput = vec3(1.0);
   for (uint bounce = 0u; bounce < params.max_bounces; ++bounce) {
     vec3 o = spawn_origin(load_triangle(tri), b, n);
-    radiance += throughput * albedo * sample_light(o, n, tri, state);
-    // BSDF sample: cosine-weighted, so f * cos / pdf = albedo.
-    float u1 = next_random(state);
-    float u2 = next_random(state);
-    vec3 dir = sample_cosine(n, u1, u2);
-    float pdf_bsdf = max(dot(n, dir), 0.0) / kPi;
-    throughput *= albedo;
+    Vertex vertex = make_vertex(tri, n, v, albedo);
+    radiance += throughput * (vertex.glossy ? vec3(1.0) : albedo) * sample_light(o, n, tri, vertex, state);
+    vec3 dir;
+    float pdf_bsdf;
+    if (!vertex.glossy) {
+      // Cosine-weighted, so f * cos / pdf = albedo.
+      float u1 = next_random(state);
+      float u2 = next_random(state);
+      dir = sample_cosine(n, u1, u2);
+      pdf_bsdf = max(dot(n, dir), 0.0) / kPi;
+      throughput *= albedo;
+    } else {
+      float u0 = next_random(state);
+      float u1 = next_random(state);
+      float u2 = next_random(state);
+      vec3 l = glossy_sample(vertex.model, vertex.v, u0, u1, u2);
+      if (l.z <= 0.0) break;
+      vec3 f_cos = glossy_f_cos(vertex.model, vertex.v, l, pdf_bsdf);
+      if (pdf_bsdf <= 0.0) break;
+      dir = normalize(l.x * vertex.t + l.y * vertex.b + l.z * n);
+      throughput *= f_cos / pdf_bsdf;
+    }
     rays_traced += 1u;
     Hit h = trace_closest(o, dir, 0.0, 1e30, tri);
     float t_sphere;
@@ -194,6 +233,7 @@ vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 albedo, vec3 emission, inout uint
     }
     n = triangle_normal(t);
     if (dot(n, dir) > 0.0) n = -n;
+    v = -dir;
     tri = h.triangle;
     b = h.bary;
     albedo = surface_albedo(h.triangle, h.bary);
@@ -230,12 +270,13 @@ void shade_pixel(ivec2 p) {
     vec3 x = t.p0 * (1.0 - b.x - b.y) + t.p1 * b.x + t.p2 * b.y;
     vec3 n = triangle_normal(t);
     if (dot(n, x - cam.position.xyz) > 0.0) n = -n;
+    vec3 v = normalize(cam.position.xyz - x);
     vec3 albedo = surface_albedo(vis.y, b);
-    demodulation = demodulation_albedo(vis.y, b);
+    demodulation = demodulation_albedo(vis.y, b, dot(n, v));
     vec3 emission = materials.values[t.material].emission.rgb;
     for (uint s = 0u; s < params.spp; ++s) {
       uint state = s == 0u ? seed : pcg_hash(seed + s);
-      radiance += trace_path(vis.y, b, n, albedo, emission, state);
+      radiance += trace_path(vis.y, b, n, v, albedo, emission, state);
     }
     radiance /= float(max(params.spp, 1u));
   }

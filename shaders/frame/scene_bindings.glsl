@@ -3,6 +3,7 @@
 #ifndef ASVGF_FRAME_SCENE_BINDINGS_GLSL
 #define ASVGF_FRAME_SCENE_BINDINGS_GLSL
 
+#include "common/bsdf.glsl"
 #include "common/scene_data.glsl"
 
 // The including shader enables GL_EXT_ray_query (directives must precede declarations).
@@ -65,12 +66,27 @@ vec3 surface_albedo(uint tri, vec2 bary) {
   return a.rgb * srgb_to_linear(srgb);
 }
 
-// The albedo the denoiser divides illumination by and composite multiplies back: the surface's, but
-// 1 on emitters, whose emitted radiance is not reflectance-modulated; dividing it by a dark albedo
-// would push a valid emission (<= 65504) past what the fp16 histories hold.
-vec3 demodulation_albedo(uint tri, vec2 bary) {
+// Whether the triangle's material has a GGX lobe (common/bsdf.glsl); if not it is Lambertian.
+bool triangle_glossy(uint tri) {
+  vec4 s = materials.values[triangles.values[tri].material].surface;
+  return is_glossy(s.y, s.z);
+}
+// The glossy model of the triangle's material, with `base` its (textured) surface_albedo.
+Glossy triangle_glossy_model(uint tri, vec3 base) {
+  vec4 s = materials.values[triangles.values[tri].material].surface;
+  return make_glossy(base, s.x, s.y, s.z);
+}
+
+// The albedo the denoiser divides illumination by and composite multiplies back: the surface's
+// (a glossy one's directional albedo seen at cos(theta) = n_v), but 1 on emitters, whose emitted
+// radiance is not reflectance-modulated; dividing it by a dark albedo would push a valid emission
+// (<= 65504) past what the fp16 histories hold.
+vec3 demodulation_albedo(uint tri, vec2 bary, float n_v) {
   if (materials.values[triangles.values[tri].material].emission.a > 0.0) return vec3(1.0);
-  return surface_albedo(tri, bary);
+  vec3 albedo = surface_albedo(tri, bary);
+  if (!triangle_glossy(tri)) return albedo;
+  float roughness = materials.values[triangles.values[tri].material].surface.x;
+  return glossy_albedo(triangle_glossy_model(tri, albedo), roughness, clamp(n_v, 0.0, 1.0));
 }
 
 #include "common/trace.glsl"

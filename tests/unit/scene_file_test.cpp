@@ -17,7 +17,9 @@ namespace {
 
 const fs::path kData = fs::path(__FILE__).parent_path().parent_path() / "data" / "scenes";
 
-bool near(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) { return glm::length(a - b) <= eps; }
+bool near(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) {
+  return glm::length(a - b) <= eps;
+}
 
 int material_named(const Scene& s, const std::string& name) {
   for (std::size_t i = 0; i < s.materials.size(); ++i) {
@@ -37,7 +39,8 @@ struct Scratch {
   fs::path dir;
   Scratch() {
     static int counter = 0;
-    dir = fs::temp_directory_path() / ("asvgf_scene_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    dir = fs::temp_directory_path() /
+          ("asvgf_scene_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
     fs::create_directories(dir);
   }
   ~Scratch() {
@@ -77,9 +80,12 @@ std::string scene_json(const std::string& mesh = R"({"name": "tri", "material": 
       "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]})",
                        const std::string& instance = R"({"mesh": "tri"})", const std::string& extra = "") {
   return R"({"materials": [{"name": "white", "albedo": [0.5, 0.5, 0.5]}],
-  "meshes": [)" + mesh + R"(],
-  "instances": [)" + instance + R"(],
-  "camera": {"position": [0, 0, 3], "target": [0, 0, 0]})" + extra + "\n}\n";
+  "meshes": [)" +
+         mesh + R"(],
+  "instances": [)" +
+         instance + R"(],
+  "camera": {"position": [0, 0, 3], "target": [0, 0, 0]})" +
+         extra + "\n}\n";
 }
 
 }  // namespace
@@ -159,6 +165,14 @@ TEST_CASE("scene file: the glTF example (.gltf and .glb) loads with node transfo
     CHECK(near(s.materials[static_cast<std::size_t>(glow)].emission, {8.0f, 4.0f, 2.0f}));  // factor * strength
     CHECK(triangles_with(m, tile) == 2);
     CHECK(triangles_with(m, glow) == 1);
+    // glTF's metallic-roughness model: absent factors are 1 (a rough metal), the dielectric specular 1.
+    CHECK(t.metallic == 1.0f);
+    CHECK(t.roughness == 1.0f);
+    CHECK(t.specular == 1.0f);
+    if (mesh == "quad_text") {  // the .glb was written before the factors were added to the .gltf
+      CHECK(s.materials[static_cast<std::size_t>(glow)].metallic == 0.25f);
+      CHECK(s.materials[static_cast<std::size_t>(glow)].roughness == 0.4f);
+    }
     // Quad: node scale 2 under the root's translation (0, 1, 0); lamp: 90 degrees about y.
     for (std::uint32_t i = 0; i < 4; ++i) {
       CHECK(m.positions[i].y == doctest::Approx(1.0f));
@@ -171,42 +185,59 @@ TEST_CASE("scene file: the glTF example (.gltf and .glb) loads with node transfo
 
 TEST_CASE("scene file: a missing file, malformed JSON or wrong top-level content names the file and the place") {
   Scratch tmp;
-  SUBCASE("missing JSON file") { check_error(tmp.dir / "absent.json", {"no such file"}); }
+  SUBCASE("missing JSON file") {
+    check_error(tmp.dir / "absent.json", {"no such file"});
+  }
   SUBCASE("malformed JSON gives line:column") {
-    check_error(tmp.write("bad.json", "{\n  \"meshes\": [\n    {\"name\": \"a\",, }\n  ]\n}\n"), {"bad.json:3:18", "malformed JSON"});
+    check_error(tmp.write("bad.json", "{\n  \"meshes\": [\n    {\"name\": \"a\",, }\n  ]\n}\n"),
+                {"bad.json:3:18", "malformed JSON"});
   }
   SUBCASE("number overflow in JSON") {
     check_error(tmp.write("big.json", "{\"frames\": 1e999}"), {"big.json", "malformed JSON", "overflow"});
   }
   SUBCASE("unknown top-level key") {
-    check_error(tmp.write("s.json", scene_json().replace(1, 0, "\"light\": [],")), {"s.json: /light: unknown key 'light'", "lights"});
+    check_error(tmp.write("s.json", scene_json().replace(1, 0, "\"light\": [],")),
+                {"s.json: /light: unknown key 'light'", "lights"});
   }
   SUBCASE("no camera") {
-    check_error(tmp.write("s.json", R"({"meshes": [], "instances": []})"), {"s.json: /: missing required key 'camera'"});
+    check_error(tmp.write("s.json", R"({"meshes": [], "instances": []})"),
+                {"s.json: /: missing required key 'camera'"});
   }
   SUBCASE("wrong type of frames") {
-    check_error(tmp.write("s.json", scene_json(R"({"name": "tri", "material": "white", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]})",
-                                               R"({"mesh": "tri"})", R"(, "frames": "many")")),
-                {"/frames", "non-negative integer"});
+    check_error(
+        tmp.write(
+            "s.json",
+            scene_json(
+                R"({"name": "tri", "material": "white", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]})",
+                R"({"mesh": "tri"})", R"(, "frames": "many")")),
+        {"/frames", "non-negative integer"});
   }
 }
 
 TEST_CASE("scene file: bad instances, keyframes, lights and materials name their JSON pointer") {
   Scratch tmp;
-  const std::string tri = R"({"name": "tri", "material": "white", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]})";
+  const std::string tri =
+      R"({"name": "tri", "material": "white", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]})";
   SUBCASE("translation of the wrong size") {
-    check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "tri"}, {"mesh": "tri"}, {"mesh": "tri", "keyframes": [{"frame": 0, "translation": [1, 2]}]})")),
-                {"s.json: /instances/2/keyframes/0/translation: expected an array of 3 numbers"});
+    check_error(
+        tmp.write(
+            "s.json",
+            scene_json(
+                tri,
+                R"({"mesh": "tri"}, {"mesh": "tri"}, {"mesh": "tri", "keyframes": [{"frame": 0, "translation": [1, 2]}]})")),
+        {"s.json: /instances/2/keyframes/0/translation: expected an array of 3 numbers"});
   }
   SUBCASE("unknown key in a transform") {
     check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "tri", "transform": {"translate": [0,0,0]}})")),
                 {"/instances/0/transform/translate: unknown key 'translate'", "translation"});
   }
   SUBCASE("instance without mesh") {
-    check_error(tmp.write("s.json", scene_json(tri, R"({"name": "x"})")), {"/instances/0: missing required key 'mesh'"});
+    check_error(tmp.write("s.json", scene_json(tri, R"({"name": "x"})")),
+                {"/instances/0: missing required key 'mesh'"});
   }
   SUBCASE("instance of an unknown mesh") {
-    check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "teapot"})")), {"/instances/0/mesh: no mesh named 'teapot'", "tri"});
+    check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "teapot"})")),
+                {"/instances/0/mesh: no mesh named 'teapot'", "tri"});
   }
   SUBCASE("keyframes out of order") {
     check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "tri", "keyframes": [{"frame": 4}, {"frame": 2}]})")),
@@ -217,30 +248,50 @@ TEST_CASE("scene file: bad instances, keyframes, lights and materials name their
                 {"/instances/0/keyframes/0: missing required key 'frame'"});
   }
   SUBCASE("both rotation forms") {
-    check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "tri", "transform": {"rotation_degrees": [0,0,0], "rotation_quat": [1,0,0,0]}})")),
-                {"/instances/0/transform", "not both"});
+    check_error(
+        tmp.write(
+            "s.json",
+            scene_json(tri,
+                       R"({"mesh": "tri", "transform": {"rotation_degrees": [0,0,0], "rotation_quat": [1,0,0,0]}})")),
+        {"/instances/0/transform", "not both"});
   }
   SUBCASE("negative material emission") {
-    check_error(tmp.write("s.json", R"({"materials": [{"name": "white", "emission": [1, -2, 0]}], "meshes": [], "instances": [],
+    check_error(
+        tmp.write("s.json", R"({"materials": [{"name": "white", "emission": [1, -2, 0]}], "meshes": [], "instances": [],
                                        "camera": {"position": [0,0,1], "target": [0,0,0]}})"),
-                {"/materials/0/emission: must not be negative"});
+        {"/materials/0/emission: must not be negative"});
   }
   SUBCASE("albedo above one") {
-    check_error(tmp.write("s.json", R"({"materials": [{"name": "white", "albedo": [1.5, 0, 0]}], "meshes": [], "instances": [],
+    check_error(
+        tmp.write("s.json", R"({"materials": [{"name": "white", "albedo": [1.5, 0, 0]}], "meshes": [], "instances": [],
                                        "camera": {"position": [0,0,1], "target": [0,0,0]}})"),
-                {"/materials/0/albedo"});
+        {"/materials/0/albedo"});
+  }
+  SUBCASE("roughness, metallic or specular outside [0, 1]") {
+    for (const char* key : {"roughness", "metallic", "specular"}) {
+      CAPTURE(key);
+      check_error(tmp.write("s.json", std::string(R"({"materials": [{"name": "white", ")") + key +
+                                          R"(": 1.5}], "meshes": [], "instances": [],
+        "camera": {"position": [0, 0, 3], "target": [0, 0, 0]}})"),
+                  {(std::string("/materials/0/") + key).c_str(), "must be in [0, 1]"});
+    }
   }
   SUBCASE("missing albedo texture") {
-    check_error(tmp.write("s.json", R"({"materials": [{"name": "white", "albedo_texture": "nothere.png"}], "meshes": [], "instances": [],
+    check_error(
+        tmp.write("s.json",
+                  R"({"materials": [{"name": "white", "albedo_texture": "nothere.png"}], "meshes": [], "instances": [],
                                        "camera": {"position": [0,0,1], "target": [0,0,0]}})"),
-                {"/materials/0/albedo_texture", "nothere.png", "cannot read image"});
+        {"/materials/0/albedo_texture", "nothere.png", "cannot read image"});
   }
   SUBCASE("sphere radius zero") {
-    check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "tri"})", R"(, "lights": [{"position": [0,1,0], "radius": 0, "emission": [1,1,1]}])")),
-                {"/lights/0/radius: must be > 0"});
+    check_error(
+        tmp.write("s.json", scene_json(tri, R"({"mesh": "tri"})",
+                                       R"(, "lights": [{"position": [0,1,0], "radius": 0, "emission": [1,1,1]}])")),
+        {"/lights/0/radius: must be > 0"});
   }
   SUBCASE("light missing emission") {
-    check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "tri"})", R"(, "lights": [{"position": [0,1,0], "radius": 0.1}])")),
+    check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "tri"})",
+                                               R"(, "lights": [{"position": [0,1,0], "radius": 0.1}])")),
                 {"/lights/0: missing required key 'emission'"});
   }
   SUBCASE("unknown light type") {
@@ -248,35 +299,54 @@ TEST_CASE("scene file: bad instances, keyframes, lights and materials name their
                 {"/lights/0/type: unknown light type 'area'"});
   }
   SUBCASE("camera keyframe of the wrong type") {
-    check_error(tmp.write("s.json", R"({"meshes": [], "instances": [], "camera": {"keyframes": [{"frame": 0, "position": [0,0,1], "target": "origin"}]}})"),
-                {"/camera/keyframes/0/target: expected an array of 3 numbers"});
+    check_error(
+        tmp.write(
+            "s.json",
+            R"({"meshes": [], "instances": [], "camera": {"keyframes": [{"frame": 0, "position": [0,0,1], "target": "origin"}]}})"),
+        {"/camera/keyframes/0/target: expected an array of 3 numbers"});
   }
 }
 
 TEST_CASE("scene file: bad inline meshes name the mesh, triangle and vertex") {
   Scratch tmp;
   SUBCASE("index out of range") {
-    check_error(tmp.write("s.json", scene_json(R"({"name": "tri", "material": "white", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2], [0,1,5]]})")),
-                {"/meshes/0/indices/1/2: index 5 out of range (3 positions)"});
+    check_error(
+        tmp.write(
+            "s.json",
+            scene_json(
+                R"({"name": "tri", "material": "white", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2], [0,1,5]]})")),
+        {"/meshes/0/indices/1/2: index 5 out of range (3 positions)"});
   }
   SUBCASE("vertex not finite as a float") {
-    check_error(tmp.write("s.json", scene_json(R"({"name": "tri", "material": "white", "positions": [[0,0,0],[1e39,0,0],[0,1,0]], "indices": [[0,1,2]]})")),
-                {"/meshes/0/positions/1/0", "not a finite"});
+    check_error(
+        tmp.write(
+            "s.json",
+            scene_json(
+                R"({"name": "tri", "material": "white", "positions": [[0,0,0],[1e39,0,0],[0,1,0]], "indices": [[0,1,2]]})")),
+        {"/meshes/0/positions/1/0", "not a finite"});
   }
   SUBCASE("no triangles at all") {
-    check_error(tmp.write("s.json", scene_json(R"({"name": "tri", "material": "white", "positions": [[0,0,0]], "indices": []})")),
+    check_error(tmp.write("s.json",
+                          scene_json(R"({"name": "tri", "material": "white", "positions": [[0,0,0]], "indices": []})")),
                 {"no triangles"});
   }
   SUBCASE("unknown material") {
-    check_error(tmp.write("s.json", scene_json(R"({"name": "tri", "material": "gold", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]})")),
-                {"/meshes/0/material: no material named 'gold'", "white"});
+    check_error(
+        tmp.write(
+            "s.json",
+            scene_json(
+                R"({"name": "tri", "material": "gold", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]})")),
+        {"/meshes/0/material: no material named 'gold'", "white"});
   }
   SUBCASE("inline mesh without material") {
-    check_error(tmp.write("s.json", scene_json(R"({"name": "tri", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]})")),
-                {"/meshes/0: missing required key 'material'"});
+    check_error(
+        tmp.write("s.json",
+                  scene_json(R"({"name": "tri", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]})")),
+        {"/meshes/0: missing required key 'material'"});
   }
   SUBCASE("both file and positions") {
-    check_error(tmp.write("s.json", scene_json(R"({"name": "tri", "file": "a.obj", "positions": []})")), {"/meshes/0", "exactly one"});
+    check_error(tmp.write("s.json", scene_json(R"({"name": "tri", "file": "a.obj", "positions": []})")),
+                {"/meshes/0", "exactly one"});
   }
 }
 
@@ -306,7 +376,8 @@ TEST_CASE("scene file: bad OBJ files name the JSON place, the OBJ file and the f
   }
   SUBCASE("missing MTL") {
     tmp.write("nomtl.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    check_error(tmp.write("s.json", scene_json(R"({"name": "m", "file": "nomtl.obj"})", R"({"mesh": "m"})")), {"nomtl.obj", "gone.mtl"});
+    check_error(tmp.write("s.json", scene_json(R"({"name": "m", "file": "nomtl.obj"})", R"({"mesh": "m"})")),
+                {"nomtl.obj", "gone.mtl"});
   }
 }
 
@@ -318,15 +389,18 @@ TEST_CASE("scene file: bad glTF files name the JSON place, the glTF file and the
   // One triangle: 3 float positions, then (for the indexed form) 3 u16 indices 0, 1, 7.
   const auto gltf = [](const std::string& base64, int bytes, bool indexed) {
     return std::string(R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
-      "meshes": [{"name": "tri", "primitives": [{"attributes": {"POSITION": 0})") + (indexed ? R"(, "indices": 1)" : "") + R"(}]}],
+      "meshes": [{"name": "tri", "primitives": [{"attributes": {"POSITION": 0})") +
+           (indexed ? R"(, "indices": 1)" : "") + R"(}]}],
       "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
                     {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
       "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
-      "buffers": [{"byteLength": )" + std::to_string(bytes) + R"(, "uri": "data:application/octet-stream;base64,)" + base64 + R"("}]})";
+      "buffers": [{"byteLength": )" +
+           std::to_string(bytes) + R"(, "uri": "data:application/octet-stream;base64,)" + base64 + R"("}]})";
   };
   SUBCASE("index out of range") {
     tmp.write("oob.gltf", gltf("AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAcAAAA=", 44, true));
-    check_error(tmp.write("s.json", with_gltf("oob.gltf")), {"/meshes/0/file", "oob.gltf", "primitive 0", "triangle 0", "index 7 out of range"});
+    check_error(tmp.write("s.json", with_gltf("oob.gltf")),
+                {"/meshes/0/file", "oob.gltf", "primitive 0", "triangle 0", "index 7 out of range"});
   }
   SUBCASE("NaN vertex") {
     tmp.write("nan.gltf", gltf("AAAAAAAAAAAAAAAAAADAfwAAAAAAAAAAAAAAAAAAgD8AAAAA", 36, false));
@@ -343,7 +417,8 @@ TEST_CASE("scene file: bad glTF files name the JSON place, the glTF file and the
 
 TEST_CASE("scene file: emission beyond 65504 and coordinates beyond 2^30 are errors naming the file and the object") {
   Scratch tmp;
-  const std::string tri = R"({"name": "tri", "material": "white", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]})";
+  const std::string tri =
+      R"({"name": "tri", "material": "white", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]})";
   SUBCASE("material emission above the fp16 histories' range") {
     check_error(tmp.write("s.json", R"({"materials": [{"name": "white"}, {"name": "sun", "emission": [1e5, 1, 1]}],
                                        "meshes": [{"name": "tri", "material": "sun", "positions": [[0,0,0],[1,0,0],[0,1,0]], "indices": [[0,1,2]]}],
@@ -352,28 +427,47 @@ TEST_CASE("scene file: emission beyond 65504 and coordinates beyond 2^30 are err
   }
   SUBCASE("the largest valid emission loads") {
     CHECK(error_of(tmp.write("s.json", R"({"materials": [{"name": "white", "emission": [65504, 65504, 0]}],
-                                          "meshes": [)" + tri + R"(], "instances": [{"mesh": "tri"}],
+                                          "meshes": [)" +
+                                           tri + R"(], "instances": [{"mesh": "tri"}],
                                           "camera": {"position": [0,0,1], "target": [0,0,0]}})")) == "");
   }
   SUBCASE("sphere light emission above the range") {
-    check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "tri"})", R"(, "lights": [{"name": "bulb", "position": [0,1,0], "radius": 0.1, "emission": [4e11, 4e11, 4e11]}])")),
-                {"s.json: sphere light 'bulb' (#0): keyframe 0: emission", "65504"});
+    check_error(
+        tmp.write(
+            "s.json",
+            scene_json(
+                tri, R"({"mesh": "tri"})",
+                R"(, "lights": [{"name": "bulb", "position": [0,1,0], "radius": 0.1, "emission": [4e11, 4e11, 4e11]}])")),
+        {"s.json: sphere light 'bulb' (#0): keyframe 0: emission", "65504"});
   }
   SUBCASE("a vertex beyond 2^30") {
-    check_error(tmp.write("s.json", scene_json(R"({"name": "far", "material": "white", "positions": [[0,0,0],[1,0,0],[0,1e10,0]], "indices": [[0,1,2]]})",
-                                               R"({"name": "far_instance", "mesh": "far"})")),
-                {"s.json: instance 'far_instance' (#0): keyframe 0: mesh 'far' (#0) vertex 2 lands at (0, 1e+10, 0)", "2^30"});
+    check_error(
+        tmp.write(
+            "s.json",
+            scene_json(
+                R"({"name": "far", "material": "white", "positions": [[0,0,0],[1,0,0],[0,1e10,0]], "indices": [[0,1,2]]})",
+                R"({"name": "far_instance", "mesh": "far"})")),
+        {"s.json: instance 'far_instance' (#0): keyframe 0: mesh 'far' (#0) vertex 2 lands at (0, 1e+10, 0)", "2^30"});
   }
   SUBCASE("a vertex moved beyond 2^30 by its instance's transform") {
-    check_error(tmp.write("s.json", scene_json(tri, R"({"name": "moved", "mesh": "tri", "keyframes": [{"frame": 0}, {"frame": 5, "translation": [0, 0, -2e9]}]})")),
-                {"instance 'moved' (#0): keyframe 1: mesh 'tri' (#0) vertex 0", "2^30"});
+    check_error(
+        tmp.write(
+            "s.json",
+            scene_json(
+                tri,
+                R"({"name": "moved", "mesh": "tri", "keyframes": [{"frame": 0}, {"frame": 5, "translation": [0, 0, -2e9]}]})")),
+        {"instance 'moved' (#0): keyframe 1: mesh 'tri' (#0) vertex 0", "2^30"});
   }
   SUBCASE("a sphere light reaching beyond 2^30") {
-    check_error(tmp.write("s.json", scene_json(tri, R"({"mesh": "tri"})", R"(, "lights": [{"position": [1073741800,0,0], "radius": 100, "emission": [1,1,1]}])")),
-                {"sphere light 'light0' (#0): keyframe 0: the sphere at", "2^30"});
+    check_error(
+        tmp.write("s.json",
+                  scene_json(tri, R"({"mesh": "tri"})",
+                             R"(, "lights": [{"position": [1073741800,0,0], "radius": 100, "emission": [1,1,1]}])")),
+        {"sphere light 'light0' (#0): keyframe 0: the sphere at", "2^30"});
   }
   SUBCASE("a camera beyond 2^30") {
-    check_error(tmp.write("s.json", R"({"materials": [{"name": "white"}], "meshes": [)" + tri + R"(], "instances": [{"mesh": "tri"}],
+    check_error(tmp.write("s.json", R"({"materials": [{"name": "white"}], "meshes": [)" + tri +
+                                        R"(], "instances": [{"mesh": "tri"}],
                                        "camera": {"position": [0,0,3e9], "target": [0,0,0]}})"),
                 {"camera: keyframe 0: position (0, 0, 3e+09)", "2^30"});
   }
