@@ -23,13 +23,15 @@ struct BenchOptions {
   int warmup = 2;
   int frames = 5;
   int first_frame = 4;
-  int bandwidth_mib = 0;  // 0: 256 MiB on a GPU, 16 MiB on a CPU device
+  int bandwidth_mib = 0;   // 0: 256 MiB on a GPU, 16 MiB on a CPU device
   float time_step = 1.0f;  // scene time per frame
 };
 
 // The passes that trace rays; every other pass of the frame is the denoiser's (the gradient chain
 // included), which the denoiser line sums.
-bool traces(const std::string& pass) { return pass == "gbuffer" || pass == "pathtrace"; }
+bool traces(const std::string& pass) {
+  return pass == "gbuffer" || pass == "pathtrace";
+}
 
 struct Floor {
   std::uint64_t bytes = 0;
@@ -81,9 +83,9 @@ int run_bench(BenchOptions& o) {
   std::map<std::string, Floor> floors;
   for (const auto& t : graph::pass_traffic(renderer.last_frame()))
     floors[t.pass] = {t.read_bytes + t.written_bytes, !t.uncounted_reads};
-  const std::uint64_t copy_bytes =
-      std::uint64_t(o.bandwidth_mib > 0 ? o.bandwidth_mib : cpu ? 16 : 256) << 20;
-  const auto bandwidth = measure_copy_bandwidth(*device, std::min(copy_bytes, device->capabilities().max_buffer_size), 20);
+  const std::uint64_t copy_bytes = std::uint64_t(o.bandwidth_mib > 0 ? o.bandwidth_mib : cpu ? 16 : 256) << 20;
+  const auto bandwidth =
+      measure_copy_bandwidth(*device, std::min(copy_bytes, device->capabilities().max_buffer_size), 20);
   const double per_ms = bandwidth ? bandwidth->bytes_per_second * 1e-3 : 0.0;  // bytes per millisecond
 
   auto row = [&](const std::string& name, double ms, const Floor& f) {
@@ -107,9 +109,10 @@ int run_bench(BenchOptions& o) {
   std::printf("%-22s %10.3f   (%d of %d measured frames moving%s)\n", "frame", median(frame_ms), moving, o.frames,
               moving < o.frames ? ": still frames skip the gradient passes; see --time-step" : "");
   row("denoiser", median(denoiser_ms), denoiser);
-  std::printf("  (ms: medians; denoiser: every pass but gbuffer and pathtrace, summed per frame; MB moved: the\n"
-              "  bytes each pass's declared images and buffers hold, read plus written, each once; + scene reads:\n"
-              "  the pass also traverses the scene, whose reads the floor leaves out)\n");
+  std::printf(
+      "  (ms: medians; denoiser: every pass but gbuffer and pathtrace, summed per frame; MB moved: the\n"
+      "  bytes each pass's declared images and buffers hold, read plus written, each once; + scene reads:\n"
+      "  the pass also traverses the scene, whose reads the floor leaves out)\n");
   if (bandwidth)
     std::printf("\ncopy bandwidth:        %.3f TB/s (a %llu MiB buffer copy, read + written, median of 20: %.4f ms)\n",
                 bandwidth->bytes_per_second * 1e-12, static_cast<unsigned long long>(bandwidth->bytes >> 20),
@@ -127,7 +130,9 @@ std::function<int()> add_bench_command(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
   auto* cmd = app.add_subcommand("bench", "Measure GPU time per pass and rays per second");
   add_scene_options(*cmd, o->scene);
-  cmd->add_option("--warmup", o->warmup, "Frames rendered before measuring")->check(CLI::Range(0, 100))->capture_default_str();
+  cmd->add_option("--warmup", o->warmup, "Frames rendered before measuring")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
   cmd->add_option("--frames", o->frames, "Frames measured")->check(CLI::Range(1, 1000))->capture_default_str();
   cmd->add_option("--first-frame", o->first_frame, "Animation frame to start at")
       ->check(CLI::Range(0, 100000))

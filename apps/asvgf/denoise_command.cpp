@@ -34,7 +34,6 @@ struct DenoiseOptions {
   bool quiet = false;
 };
 
-
 // --input DIR fills every pattern not given explicitly with DIR/<buffer>_%04d.exr (the gradient
 // only for asvgf, and only when DIR has one for the first frame) and reads the depth gradient.
 void apply_input_folder(DenoiseOptions& o) {
@@ -63,7 +62,6 @@ bool has_gradient_samples(const render::ExrImage& image) {
     if (image.rgba[i] >= 0.0f && image.rgba[i] < 9.0f) return true;
   return false;
 }
-
 
 int run_denoise(DenoiseOptions& o) {
   apply_input_folder(o);

@@ -44,7 +44,8 @@ int run_graph(const GraphOptions& o) {
   render::SceneGpu scene_gpu(device, scene, device.capabilities().ray_query);
   const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
   frame::FrameTargets targets{
-      device.create_image({"hdr", settings.width, settings.height, hal::Format::RGBA32F, usage}), hal::State::Undefined,
+      device.create_image({"hdr", settings.width, settings.height, hal::Format::RGBA32F, usage}),
+      hal::State::Undefined,
       device.create_image({"display", settings.width, settings.height, hal::Format::RGBA8Unorm, usage}),
       hal::State::Undefined,
       {},
@@ -89,11 +90,11 @@ int run_graph(const GraphOptions& o) {
 std::function<int()> add_graph_command(CLI::App& app) {
   auto options = std::make_shared<GraphOptions>();
   auto* cmd = app.add_subcommand("graph", "Print the compiled render graph of one frame (no GPU needed)");
-  cmd->add_option("--scene", options->scene, "Scene: the built-in 'cornell'")
-      ->check(CLI::IsMember({"cornell"}))
+  cmd->add_option("--scene", options->scene, "Built-in scene")
+      ->check(CLI::IsMember(scene::builtin_scenes()))
       ->capture_default_str();
   cmd->add_option("--animation", options->animation, "Animation of the built-in scene")
-      ->check(CLI::IsMember({"static", "light-exit", "orbit", "boxes-move"}))
+      ->check(CLI::IsMember(scene::builtin_animations()))
       ->capture_default_str();
   cmd->add_option("--method", options->method, "Denoising method")
       ->check(CLI::IsMember({"raw", "ema", "svgf", "asvgf", "reference"}))

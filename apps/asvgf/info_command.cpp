@@ -12,7 +12,9 @@
 namespace asvgf::cli {
 namespace {
 
-const char* yes_no(bool v) { return v ? "yes" : "no"; }
+const char* yes_no(bool v) {
+  return v ? "yes" : "no";
+}
 
 int run_info(const std::string& device) {
   const auto adapters = hal::vulkan::list_adapters();  // throws NoDevice with a clear message
@@ -48,10 +50,10 @@ int run_info(const std::string& device) {
       const auto gl = hal::gl::create_device(gl_options);
       const auto& g = gl->capabilities();
       std::printf("\nbackend %s: %s, %s\n", name, gl->adapter().name.c_str(), gl->adapter().api_version.c_str());
-      std::printf("  timestamps %s, max image dimension %u, largest storage binding %llu bytes, tracing variant "
-                  "software BVH (no acceleration structures)\n",
-                  yes_no(g.timestamps), g.max_image_dimension,
-                  static_cast<unsigned long long>(g.max_storage_buffer_range));
+      std::printf(
+          "  timestamps %s, max image dimension %u, largest storage binding %llu bytes, tracing variant "
+          "software BVH (no acceleration structures)\n",
+          yes_no(g.timestamps), g.max_image_dimension, static_cast<unsigned long long>(g.max_storage_buffer_range));
     } catch (const hal::Error& e) {
       std::printf("\nbackend %s: not available: %s\n", name, e.what());
     }
@@ -63,8 +65,10 @@ int run_info(const std::string& device) {
 
 std::function<int()> add_info_command(CLI::App& app) {
   auto device = std::make_shared<std::string>();
-  auto* cmd = app.add_subcommand("info", "List the Vulkan devices and the OpenGL / ES contexts with their drivers, versions and capabilities");
-  cmd->add_option("--device", *device, "Adapter to open: index or part of its name (default: $ASVGF_DEVICE, else best)");
+  auto* cmd = app.add_subcommand(
+      "info", "List the Vulkan devices and the OpenGL / ES contexts with their drivers, versions and capabilities");
+  cmd->add_option("--device", *device,
+                  "Adapter to open: index or part of its name (default: $ASVGF_DEVICE, else best)");
   return [device] { return run_info(*device); };
 }
 

@@ -41,7 +41,6 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-
   for (auto& [sub, run] : commands) {
     if (!sub->parsed()) continue;
     try {

@@ -18,7 +18,7 @@ namespace {
 
 struct RenderOptions {
   SceneOptions scene;
-  int frames = 0;  // 0: the whole animation
+  int frames = 0;         // 0: the whole animation
   std::uint32_t spp = 0;  // 0: 1 for the denoisers, 256 for the reference method
   std::uint32_t reference_spp = 0;
   std::string out = "out";
@@ -26,14 +26,14 @@ struct RenderOptions {
   bool quiet = false;
 };
 
-
 void write_frame(const std::filesystem::path& dir, const char* prefix, int frame, const render::FrameImages& img) {
   render::write_exr(dir / frame_file(prefix, frame, "exr"), img.width, img.height, img.hdr);
   render::write_png(dir / frame_file(prefix, frame, "png"), img.width, img.height, img.display);
 }
 
 // The denoiser's inputs of one frame as `asvgf denoise` reads them (see its --input).
-void write_aovs(const std::filesystem::path& dir, int frame, const render::AovImages& a, std::uint32_t w, std::uint32_t h) {
+void write_aovs(const std::filesystem::path& dir, int frame, const render::AovImages& a, std::uint32_t w,
+                std::uint32_t h) {
   render::write_exr(dir / frame_file("color", frame, "exr"), w, h, a.illumination);
   render::write_exr(dir / frame_file("albedo", frame, "exr"), w, h, a.albedo);
   render::write_exr(dir / frame_file("normal", frame, "exr"), w, h, a.normal);
@@ -138,7 +138,8 @@ std::function<int()> add_render_command(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   auto* cmd = app.add_subcommand("render", "Render an animation with one method; write EXR and PNG frames");
   add_scene_options(*cmd, o->scene);
-  cmd->add_option("--frames", o->frames, "Frames to render (default: the whole animation)")->check(CLI::Range(1, 100000));
+  cmd->add_option("--frames", o->frames, "Frames to render (default: the whole animation)")
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--spp", o->spp, "Samples per pixel per frame (default 1; 256 for --method reference)")
       ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--reference-spp", o->reference_spp,

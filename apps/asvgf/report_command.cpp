@@ -17,6 +17,7 @@
 #include "progress.hpp"
 #include "render/metrics.hpp"
 #include "report/report.hpp"
+#include "scene/builtin.hpp"
 #include "scene/scene.hpp"
 #include "scene_options.hpp"
 
@@ -140,13 +141,15 @@ CropRegion crop_region(std::uint32_t width, std::uint32_t height) {
   constexpr std::uint32_t kMax = 160;
   CropRegion r{0, 0, std::min(width, kMax), std::min(height, kMax)};
   if (width > kMax) r.x = std::min(width - kMax, std::uint32_t(0.68 * width) - kMax / 2);
-  if (height > kMax) r.y = std::min(height - kMax, std::uint32_t(0.3 * height) > kMax / 2 ? std::uint32_t(0.3 * height) - kMax / 2 : 0u);
+  if (height > kMax)
+    r.y = std::min(height - kMax, std::uint32_t(0.3 * height) > kMax / 2 ? std::uint32_t(0.3 * height) - kMax / 2 : 0u);
   return r;
 }
 report::CropCell crop(const std::vector<std::uint8_t>& rgba, std::uint32_t width, const CropRegion& r) {
   report::CropCell c{std::vector<std::uint8_t>(std::size_t(r.w) * r.h * 4), r.w, r.h};
   for (std::uint32_t y = 0; y < r.h; ++y)
-    std::copy_n(&rgba[((std::size_t(r.y) + y) * width + r.x) * 4], std::size_t(r.w) * 4, &c.rgba[std::size_t(y) * r.w * 4]);
+    std::copy_n(&rgba[((std::size_t(r.y) + y) * width + r.x) * 4], std::size_t(r.w) * 4,
+                &c.rgba[std::size_t(y) * r.w * 4]);
   return c;
 }
 
@@ -163,8 +166,8 @@ void write_atomic(const std::filesystem::path& path, const std::string& text) {
 std::string command_line(const ReportOptions& o, int frames) {
   std::string s = "asvgf report --scene " + o.scene.scene + " --animation " + o.scene.animation + " --size " +
                   o.scene.size + " --frames " + std::to_string(frames) + " --reference-spp " +
-                  std::to_string(o.reference_spp) + " --max-accumulation-spp " + std::to_string(o.max_accumulation_spp) +
-                  " --seed " + std::to_string(o.scene.seed);
+                  std::to_string(o.reference_spp) + " --max-accumulation-spp " +
+                  std::to_string(o.max_accumulation_spp) + " --seed " + std::to_string(o.scene.seed);
   if (!o.methods.empty()) s += " --methods " + o.methods;
   if (o.scene.software_bvh) s += " --software-bvh";
   const std::string backend = chosen_backend(o.scene.backend);
@@ -277,8 +280,8 @@ int run_report(ReportOptions& o) {
       fr.frame = f;
       fr.relmse = render::relative_mse(img.hdr, ref);
       fr.ssim = render::ssim(img.hdr, ref, d.width, d.height);
-      fr.temporal = f > 0 ? report::temporal_error(img.hdr, prev, ref, reference[std::size_t(group[std::size_t(f) - 1])])
-                          : NAN;
+      fr.temporal =
+          f > 0 ? report::temporal_error(img.hdr, prev, ref, reference[std::size_t(group[std::size_t(f) - 1])]) : NAN;
       fr.mean = render::mean_value(img.hdr);
       fr.reference_mean = reference_mean[gi];
       if (!d.timed_separately) {
@@ -314,8 +317,8 @@ int run_report(ReportOptions& o) {
   write_atomic(dir / "report.md", report::report_markdown(d, headline));
   if (!o.quiet) {
     std::fprintf(stderr, "%s\n", headline.text.c_str());
-    std::fprintf(stderr, "report: %s (report.csv and PNG plots beside it), %.0f s\n", (dir / "report.md").string().c_str(),
-                 d.wall_seconds);
+    std::fprintf(stderr, "report: %s (report.csv and PNG plots beside it), %.0f s\n",
+                 (dir / "report.md").string().c_str(), d.wall_seconds);
   }
   return 0;
 }
@@ -327,9 +330,10 @@ std::function<int()> add_report_command(CLI::App& app) {
   o->scene.size = "64x64";
   auto* cmd = app.add_subcommand("report", "Error against GPU time for every method: report.md, report.csv, PNG plots");
   auto& s = o->scene;
-  cmd->add_option("--scene", s.scene, "Built-in scene ('cornell') or a scene file (.json)")->capture_default_str();
+  cmd->add_option("--scene", s.scene, "Built-in scene (cornell, glossy, textured, many) or a scene file (.json)")
+      ->capture_default_str();
   cmd->add_option("--animation", s.animation, "Animation of the built-in scene")
-      ->check(CLI::IsMember({"static", "light-exit", "orbit", "boxes-move"}))
+      ->check(CLI::IsMember(scene::builtin_animations()))
       ->capture_default_str();
   cmd->add_option("--size", s.size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--frames", o->frames, "Frames (default: the whole animation)")->check(CLI::Range(2, 100000));
@@ -339,12 +343,14 @@ std::function<int()> add_report_command(CLI::App& app) {
   cmd->add_option("--reference-spp", o->reference_spp, "Samples per pixel of the reference")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
-  cmd->add_option("--max-accumulation-spp", o->max_accumulation_spp, "Plain accumulation at 1, 2, 4, ... up to this spp")
+  cmd->add_option("--max-accumulation-spp", o->max_accumulation_spp,
+                  "Plain accumulation at 1, 2, 4, ... up to this spp")
       ->check(CLI::Range(1, 1 << 16))
       ->capture_default_str();
   cmd->add_option("--seed", s.seed, "Random seed: the same seed gives the same numbers")->capture_default_str();
   add_backend_option(*cmd, s);
-  cmd->add_option("--device", s.device, "Vulkan adapter: index or part of its name (default: $ASVGF_DEVICE, else best)");
+  cmd->add_option("--device", s.device,
+                  "Vulkan adapter: index or part of its name (default: $ASVGF_DEVICE, else best)");
   cmd->add_flag("--software-bvh", s.software_bvh, "Trace with the software BVH even where ray queries exist");
   cmd->add_option("--timing", o->timing,
                   "GPU time of each frame: 'separate' renders every run again back to back, nothing read back (an "

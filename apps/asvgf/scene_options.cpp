@@ -36,7 +36,8 @@ void add_device_options(CLI::App& cmd, SceneOptions& o) {
 }
 
 void add_scene_options(CLI::App& cmd, SceneOptions& o) {
-  cmd.add_option("--scene", o.scene, "Built-in scene ('cornell') or a scene file (.json)")->capture_default_str();
+  cmd.add_option("--scene", o.scene, "Built-in scene (cornell, glossy, textured, many) or a scene file (.json)")
+      ->capture_default_str();
   cmd.add_option("--animation", o.animation, "Animation of the built-in scene")
       ->check(CLI::IsMember({"static", "light-exit", "orbit", "boxes-move"}))
       ->capture_default_str();
@@ -55,7 +56,9 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
 
 void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
   auto& d = o.denoise;
-  cmd.add_option("--alpha", d.alpha, "Temporal blend factor (SVGF 0.2)")->check(CLI::Range(0.001, 1.0))->capture_default_str();
+  cmd.add_option("--alpha", d.alpha, "Temporal blend factor (SVGF 0.2)")
+      ->check(CLI::Range(0.001, 1.0))
+      ->capture_default_str();
   cmd.add_option("--moments-alpha", d.moments_alpha, "Moments blend factor (SVGF 0.2)")
       ->check(CLI::Range(0.001, 1.0))
       ->capture_default_str();

@@ -1,12 +1,20 @@
-// scene/builtin.hpp: scenes that need no files: the seed's semi-closed room ("cornell") with two
-// boxes and a sphere light, and its named animations.
+// scene/builtin.hpp: scenes that need no files, each with the same named animations:
+//   cornell   the seed's semi-closed room with two boxes and a sphere light (diffuse)
+//   glossy    the same room with a rough metal floor (roughness 0.25) and a blue lacquered tall box
+//             (dielectric, roughness 0.12) reflecting the light and the short box
+//   textured  the same room with a 16x16 checker (4 texels a cell, twice a wall) on the floor and
+//             back wall and per-texel white-noise albedo (32 texels a face) on both boxes; side
+//             walls and ceiling untextured
+//   many      a procedural field of 64 spheres (1520 triangles each, ~98k in all) and 40 boxes on a
+//             ground plane under four sphere lights (builtin_many.cpp)
 //
 // Room: [-1,1]^3, y up; floor y=-1, ceiling y=+1, back wall z=-1, red left wall x=-1, green right
 // wall x=+1, open at z=+1 where the camera stands, looking towards -z. Triangles face the inside
 // (normal = cross(v1 - v0, v2 - v0)). Instances: 0 "room", 1 "tall_box", 2 "short_box"; one sphere
 // light "light" near the ceiling.
 //
-// Animations (every one has kCornellFrameCount frames):
+// Animations of the room scenes (every one has kCornellFrameCount frames; `many`'s are described in
+// builtin_many.cpp):
 //   static      nothing moves
 //   light-exit  the light holds for frames 0..3, then moves 0.4 a frame to the right through the right
 //               wall: wholly outside the room (x > 1 + radius) from frame 6 on, stopping at x = 2.4 at

@@ -2,6 +2,7 @@
 // it says and nothing else.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -33,7 +34,7 @@ std::vector<std::size_t> moved_instances(const Scene& s, float a, float b) {
 }  // namespace
 
 TEST_CASE("builtin cornell validates for every animation and has the room, two boxes and one light") {
-  REQUIRE(builtin_scenes() == std::vector<std::string>{"cornell"});
+  REQUIRE(builtin_scenes() == std::vector<std::string>{"cornell", "glossy", "textured", "many"});
   for (const std::string& animation : builtin_animations()) {
     CAPTURE(animation);
     Scene s;
@@ -62,9 +63,9 @@ TEST_CASE("builtin cornell walls face into the room and the walls are white, red
     CAPTURE(t);
     CHECK(glm::dot(n, -centre) > 0.0f);  // towards the room's centre
     const glm::vec3 albedo = s.materials[room.materials[t]].albedo;
-    if (centre.x < -0.99f) CHECK(albedo.r > albedo.g);   // left: red
-    if (centre.x > 0.99f) CHECK(albedo.g > albedo.r);    // right: green
-    CHECK(centre.z < 0.99f);                              // nothing at the open front
+    if (centre.x < -0.99f) CHECK(albedo.r > albedo.g);  // left: red
+    if (centre.x > 0.99f) CHECK(albedo.g > albedo.r);   // right: green
+    CHECK(centre.z < 0.99f);                            // nothing at the open front
   }
 }
 
@@ -87,7 +88,8 @@ TEST_CASE("builtin static animation: nothing moves over all frames") {
   for (int f = 1; f < s.frame_count; ++f) CHECK(same_state(first, evaluate(s, static_cast<float>(f))));
 }
 
-TEST_CASE("builtin light-exit: the light is inside the room at frame 0 and beyond the right wall plus radius by frame 10") {
+TEST_CASE(
+    "builtin light-exit: the light is inside the room at frame 0 and beyond the right wall plus radius by frame 10") {
   const Scene s = builtin_scene("cornell", "light-exit");
   const SphereLightState start = evaluate(s, 0.0f).lights[0];
   CHECK(start.position.x + start.radius < kCornellHalfExtent);
@@ -145,4 +147,79 @@ TEST_CASE("builtin_scene rejects an unknown scene or animation, listing the vali
   const std::string bad_anim = error_of("cornell", "spin");
   CHECK(bad_anim.find("spin") != std::string::npos);
   for (const std::string& a : builtin_animations()) CHECK(bad_anim.find(a) != std::string::npos);
+}
+
+TEST_CASE("builtin scenes: every scene validates for every animation, and each animation moves what it says") {
+  for (const std::string& name : builtin_scenes()) {
+    for (const std::string& animation : builtin_animations()) {
+      CAPTURE(name);
+      CAPTURE(animation);
+      Scene s;
+      REQUIRE_NOTHROW(s = builtin_scene(name, animation));
+      CHECK(s.name == name + "/" + animation);
+      const float last = static_cast<float>(s.frame_count - 1);
+      const FrameState first = evaluate(s, 0.0f), end = evaluate(s, last);
+      bool lights_moved = false;
+      for (std::size_t l = 0; l < first.lights.size(); ++l) {
+        lights_moved = lights_moved || first.lights[l].position != end.lights[l].position;
+      }
+      const bool camera_moved = first.camera.position != end.camera.position;
+      const bool instances_moved = !moved_instances(s, 0.0f, last).empty();
+      CHECK(lights_moved == (animation == "light-exit"));
+      CHECK(camera_moved == (animation == "orbit"));
+      CHECK(instances_moved == (animation == "boxes-move"));
+    }
+    CHECK_FALSE(error_of(name, "nope").empty());
+  }
+}
+
+TEST_CASE("builtin glossy: a metal floor and a glossy dielectric tall box; the short box stays diffuse") {
+  const Scene s = builtin_scene("glossy", "static");
+  auto material_of = [&](std::size_t instance, std::size_t triangle = 0) {
+    return s.materials[s.meshes[s.instances[instance].mesh].materials[triangle]];
+  };
+  const Material floor = material_of(0, 0);  // the room's first quad is the floor
+  CHECK(floor.metallic == 1.0f);
+  CHECK(floor.roughness < 0.5f);
+  CHECK(material_of(1).glossy());
+  CHECK(material_of(1).metallic == 0.0f);
+  CHECK_FALSE(material_of(2).glossy());
+  CHECK_FALSE(material_of(0, 2).glossy());  // ceiling
+}
+
+TEST_CASE("builtin textured: floor, back wall and boxes are textured with uvs, side walls and ceiling are not") {
+  const Scene s = builtin_scene("textured", "static");
+  REQUIRE(s.textures.size() == 2);
+  for (const Instance& inst : s.instances) {
+    const Mesh& m = s.meshes[inst.mesh];
+    CAPTURE(inst.name);
+    CHECK(m.uvs.size() == m.positions.size());
+  }
+  const Mesh& room = s.meshes[s.instances[0].mesh];
+  int textured = 0;
+  for (std::uint32_t t = 0; t < room.triangle_count(); ++t) {
+    textured += s.materials[room.materials[t]].albedo_texture >= 0 ? 1 : 0;
+  }
+  CHECK(textured == 4);  // floor and back wall
+  CHECK(s.materials[s.meshes[s.instances[1].mesh].materials[0]].albedo_texture >= 0);
+  CHECK(s.materials[s.meshes[s.instances[2].mesh].materials[0]].albedo_texture >= 0);
+}
+
+TEST_CASE("builtin many: about 100k triangles, several lights, nothing overlapping the ground") {
+  const Scene s = builtin_scene("many", "static");
+  std::size_t triangles = 0;
+  for (const Instance& inst : s.instances) triangles += s.meshes[inst.mesh].triangle_count();
+  MESSAGE("many: " << triangles << " triangles, " << s.instances.size() << " instances");
+  CHECK(triangles >= 90000);
+  CHECK(triangles <= 110000);
+  CHECK(s.sphere_lights.size() >= 3);
+  // Every object rests on or above the ground plane y = 0.
+  const FrameState f = evaluate(s, 0.0f);
+  for (std::size_t i = 1; i < s.instances.size(); ++i) {
+    const Mesh& m = s.meshes[s.instances[i].mesh];
+    float lowest = 1e30f;
+    for (const glm::vec3& p : m.positions) lowest = std::min(lowest, (f.instance_transforms[i] * glm::vec4(p, 1.0f)).y);
+    CAPTURE(s.instances[i].name);
+    CHECK(lowest > -1e-4f);
+  }
 }
