@@ -1,6 +1,7 @@
 // `asvgf report`: renders one animation with every method and setting (raw, EMA 0.2 and 0.05, SVGF,
 // A-SVGF with the default and the seed's à-trous settings, plain accumulation at 1, 2, 4, ... spp),
 // measures each frame against a reference and writes report.md, report.csv and PNG plots.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "progress.hpp"
 #include "render/metrics.hpp"
 #include "report/report.hpp"
+#include "report/summary.hpp"
 #include "scene/builtin.hpp"
 #include "scene/scene.hpp"
 #include "scene_options.hpp"
@@ -28,6 +30,7 @@ struct ReportOptions {
   SceneOptions scene;
   int frames = 0;  // 0: the whole animation
   std::string methods;
+  std::string scenes;  // --scenes: several scenes and a summary; empty: --scene only
   std::uint32_t reference_spp = 512;
   std::uint32_t max_accumulation_spp = 64;
   std::string out = "out/report";
@@ -176,24 +179,23 @@ std::string command_line(const ReportOptions& o, int frames) {
   return s;
 }
 
-int run_report(ReportOptions& o) {
+// One scene's report, written to `dir` (report.md, report.csv, plots).
+report::SceneReport report_scene(const ReportOptions& o, const std::vector<report::RunSpec>& specs, hal::Device& device,
+                                 const std::filesystem::path& dir) {
   const auto start = std::chrono::steady_clock::now();
-  finish_scene_options(o.scene);
-  const auto specs = select_runs(all_runs(o.max_accumulation_spp), o.methods);
   const scene::Scene scene = load_scene(o.scene);
   const int frames = o.frames > 0 ? o.frames : scene.frame_count;
-  auto device = open_device(o.scene);
   const render::RenderSettings base = render_settings(o.scene);
 
   report::ReportData d;
   d.scene = scene.name;
   d.animation = o.scene.animation;
   d.width = base.width, d.height = base.height, d.seed = base.seed, d.frames = frames;
-  d.device_name = device->adapter().name;
-  if (chosen_backend(o.scene.backend) != "vulkan") d.device_name += ", " + device->adapter().api_version;
-  d.device_type = std::string(hal::to_string(device->adapter().type));
-  d.cpu_device = device->adapter().type == hal::DeviceType::Cpu;
-  d.timestamps = device->capabilities().timestamps;
+  d.device_name = device.adapter().name;
+  if (chosen_backend(o.scene.backend) != "vulkan") d.device_name += ", " + device.adapter().api_version;
+  d.device_type = std::string(hal::to_string(device.adapter().type));
+  d.cpu_device = device.adapter().type == hal::DeviceType::Cpu;
+  d.timestamps = device.capabilities().timestamps;
   d.timed_separately = d.timestamps && (o.timing == "separate" || (o.timing == "auto" && !d.cpu_device));
   d.command_line = command_line(o, frames);
 
@@ -242,7 +244,7 @@ int run_report(ReportOptions& o) {
     r.method = frame::Method::Reference;
     r.spp = o.reference_spp;
     r.seed = base.seed ^ 0x9e3779b9u;  // independent of every method's noise
-    render::Renderer renderer(*device, scene, r);
+    render::Renderer renderer(device, scene, r);
     d.reference_spp = renderer.spp_per_frame();
     d.ray_query = renderer.ray_query();
     for (int f = 0; f < frames; ++f) {
@@ -268,7 +270,7 @@ int run_report(ReportOptions& o) {
     s.method = spec.method;
     s.spp = spec.spp;
     s.denoise = spec.denoise;
-    render::Renderer renderer(*device, scene, s);
+    render::Renderer renderer(device, scene, s);
     report::RunResult run;
     run.spec = spec;
     std::vector<float> prev;
@@ -298,7 +300,7 @@ int run_report(ReportOptions& o) {
     }
     if (d.timed_separately) {
       progress.step(done, spec.name + ": timing the frames back to back");
-      std::vector<FrameTime> times = time_back_to_back(*device, scene, s, frames);
+      std::vector<FrameTime> times = time_back_to_back(device, scene, s, frames);
       for (int f = 0; f < frames; ++f) {
         run.frames[std::size_t(f)].gpu_ms = times[std::size_t(f)].total;
         run.frames[std::size_t(f)].pass_ms = std::move(times[std::size_t(f)].passes);
@@ -310,7 +312,6 @@ int run_report(ReportOptions& o) {
 
   d.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const report::Headline headline = report::compute_headline(d);
-  const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
   report::write_plots(d, headline, dir);
   write_atomic(dir / "report.csv", report::report_csv(d));
@@ -320,6 +321,56 @@ int run_report(ReportOptions& o) {
     std::fprintf(stderr, "report: %s (report.csv and PNG plots beside it), %.0f s\n",
                  (dir / "report.md").string().c_str(), d.wall_seconds);
   }
+  return {std::move(d), headline, dir.filename().string()};
+}
+
+// --scenes: a comma list of built-in scene names or scene files, or "all" (every built-in scene).
+std::vector<std::string> scene_list(const std::string& list) {
+  if (list == "all") return scene::builtin_scenes();
+  std::vector<std::string> names;
+  std::stringstream ss(list);
+  std::string token;
+  const auto builtin = scene::builtin_scenes();
+  while (std::getline(ss, token, ',')) {
+    if (token.empty()) continue;
+    const bool file = std::filesystem::path(token).extension() == ".json";
+    if (!file && std::find(builtin.begin(), builtin.end(), token) == builtin.end()) {
+      std::string valid;
+      for (const auto& n : builtin) valid += (valid.empty() ? "" : ", ") + n;
+      throw CLI::ValidationError(
+          "--scenes", "'" + token + "' is neither a built-in scene (" + valid + ", or all) nor a scene file (.json)");
+    }
+    if (std::find(names.begin(), names.end(), token) != names.end())
+      throw CLI::ValidationError("--scenes", "'" + token + "' is listed twice");
+    names.push_back(token);
+  }
+  if (names.empty()) throw CLI::ValidationError("--scenes", "names no scene");
+  return names;
+}
+
+int run_report(ReportOptions& o) {
+  finish_scene_options(o.scene);
+  const auto specs = select_runs(all_runs(o.max_accumulation_spp), o.methods);
+  const std::filesystem::path out(o.out);
+  if (o.scenes.empty()) {
+    auto device = open_device(o.scene);
+    report_scene(o, specs, *device, out);
+    return 0;
+  }
+  const std::vector<std::string> names = scene_list(o.scenes);
+  auto device = open_device(o.scene);
+  std::vector<report::SceneReport> reports;
+  for (const std::string& name : names) {
+    ReportOptions one = o;
+    one.scene.scene = name;
+    if (!o.quiet)
+      std::fprintf(stderr, "asvgf report: scene %zu of %zu: %s\n", reports.size() + 1, names.size(), name.c_str());
+    reports.push_back(report_scene(one, specs, *device, out / std::filesystem::path(name).stem()));
+  }
+  std::filesystem::create_directories(out);
+  write_atomic(out / "summary.csv", report::summary_csv(reports));
+  write_atomic(out / "summary.md", report::summary_markdown(reports));
+  if (!o.quiet) std::fprintf(stderr, "summary: %s (summary.csv beside it)\n", (out / "summary.md").string().c_str());
   return 0;
 }
 
@@ -332,6 +383,10 @@ std::function<int()> add_report_command(CLI::App& app) {
   auto& s = o->scene;
   cmd->add_option("--scene", s.scene, "Built-in scene (cornell, glossy, textured, many) or a scene file (.json)")
       ->capture_default_str();
+  auto* scenes = cmd->add_option("--scenes", o->scenes,
+                                 "Comma list of scenes (built-in names or .json files) or 'all': a report for each in "
+                                 "OUT/<scene>/ and summary.md/summary.csv over them in OUT");
+  scenes->excludes("--scene");
   cmd->add_option("--animation", s.animation, "Animation of the built-in scene")
       ->check(CLI::IsMember(scene::builtin_animations()))
       ->capture_default_str();

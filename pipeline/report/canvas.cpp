@@ -69,12 +69,16 @@ void Canvas::marker(double cx, double cy, Marker shape, double size, Rgba c) {
   auto inside = [&](double px, double py) {
     const double u = px - cx, v = py - cy;
     switch (shape) {
-      case Marker::Circle: return u * u + v * v <= h * h;
-      case Marker::Square: return std::abs(u) <= h * 0.85 && std::abs(v) <= h * 0.85;
-      case Marker::Diamond: return std::abs(u) + std::abs(v) <= h * 1.1;
+      case Marker::Circle:
+        return u * u + v * v <= h * h;
+      case Marker::Square:
+        return std::abs(u) <= h * 0.85 && std::abs(v) <= h * 0.85;
+      case Marker::Diamond:
+        return std::abs(u) + std::abs(v) <= h * 1.1;
       case Marker::Triangle:  // apex up at v = -h, base at v = +h
         return v >= -h && v <= h && std::abs(u) <= (v + h) / 2.0;
-      case Marker::Cross: return (std::abs(u - v) <= h * 0.3 || std::abs(u + v) <= h * 0.3) && std::abs(u) <= h && std::abs(v) <= h;
+      case Marker::Cross:
+        return (std::abs(u - v) <= h * 0.3 || std::abs(u + v) <= h * 0.3) && std::abs(u) <= h && std::abs(v) <= h;
     }
     return false;
   };
@@ -99,8 +103,10 @@ int Canvas::text(int x, int y, std::string_view s, Rgba c, int scale) {
       const char* vertex = quads.data() + (std::size_t(q) * 4 + std::size_t(k)) * 16;
       std::copy_n(vertex, sizeof v[k], reinterpret_cast<char*>(v[k]));
     }
-    const float qx0 = std::min({v[0][0], v[1][0], v[2][0], v[3][0]}), qx1 = std::max({v[0][0], v[1][0], v[2][0], v[3][0]});
-    const float qy0 = std::min({v[0][1], v[1][1], v[2][1], v[3][1]}), qy1 = std::max({v[0][1], v[1][1], v[2][1], v[3][1]});
+    const float qx0 = std::min({v[0][0], v[1][0], v[2][0], v[3][0]}),
+                qx1 = std::max({v[0][0], v[1][0], v[2][0], v[3][0]});
+    const float qy0 = std::min({v[0][1], v[1][1], v[2][1], v[3][1]}),
+                qy1 = std::max({v[0][1], v[1][1], v[2][1], v[3][1]});
     fill_rect(x + int(qx0 * float(scale)), y + int(qy0 * float(scale)), x + int(qx1 * float(scale)),
               y + int(qy1 * float(scale)), c);
   }
@@ -121,6 +127,8 @@ void Canvas::blit(std::span<const std::uint8_t> rgba, std::uint32_t w, std::uint
     }
 }
 
-void Canvas::write_png(const std::filesystem::path& path) const { render::write_png(path, width_, height_, pixels_); }
+void Canvas::write_png(const std::filesystem::path& path) const {
+  render::write_png(path, width_, height_, pixels_);
+}
 
 }  // namespace asvgf::report

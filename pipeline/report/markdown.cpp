@@ -6,29 +6,13 @@
 #include <sstream>
 
 #include "report/report.hpp"
+#include "report/text.hpp"
 
 namespace asvgf::report {
 namespace {
 
 std::string g(double v, int digits = 3) {
-  if (!std::isfinite(v)) return "–";
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
-}
-
-// "-3.2% (14 frames)", or "n/a" when no frame had a saturated history and a lit reference.
-std::string energy_text(const EnergyBias& e) {
-  if (!e.bias) return "n/a";
-  char text[64];
-  std::snprintf(text, sizeof text, "%+.2f%% (%d frames)", 100.0 * *e.bias, e.frames);
-  return text;
-}
-
-std::string lag_text(const Lag& lag, int frames) {
-  if (!lag.measured) return "n/a";
-  if (!lag.frames) return "> " + std::to_string(frames - 1 - lag.change_frame);
-  return std::to_string(*lag.frames);
+  return number_text(v, digits);
 }
 
 class Md {
@@ -94,7 +78,8 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
            "is dark).\n\n";
   if (d.cpu_device)
     out << "> The device is " << d.device_name << " (" << d.device_type
-        << "): the graphics API run on the CPU. Its \"GPU\" times are CPU-emulated timestamps, useful to compare passes with each "
+        << "): the graphics API run on the CPU. Its \"GPU\" times are CPU-emulated timestamps, useful to compare "
+           "passes with each "
            "other on this machine and nothing else: they make no speed claim. Speed claims come from a real GPU.\n\n";
 
   out << "## Setup\n\n";
@@ -108,7 +93,8 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
   out << "| device | " << d.device_name << " (" << d.device_type << "), tracing with "
       << (d.ray_query ? "ray queries" : "the software BVH") << (d.timestamps ? "" : ", no timestamps") << " |\n";
   if (d.change)
-    out << "| scene changes | frames " << d.change->first << " to " << d.change->last << " differ from the frame before |\n";
+    out << "| scene changes | frames " << d.change->first << " to " << d.change->last
+        << " differ from the frame before |\n";
   out << "| wall time | " << g(d.wall_seconds) << " s |\n";
   out << "| command | `" << d.command_line << "` |\n\n";
 
@@ -134,8 +120,8 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
   const RunResult *e02 = find_run(d, "ema-0.2"), *e005 = find_run(d, "ema-0.05");
   if (e02 && e005 && d.change)
     out << "Ghosting: from the change on (frame " << d.change->first << "), EMA 0.05 has relMSE "
-        << g(e005->mean_relmse_after_change) << " against " << g(e02->mean_relmse_after_change)
-        << " for EMA 0.2 (lag " << lag_text(e005->lag, d.frames) << " against " << lag_text(e02->lag, d.frames)
+        << g(e005->mean_relmse_after_change) << " against " << g(e02->mean_relmse_after_change) << " for EMA 0.2 (lag "
+        << lag_text(e005->lag, d.frames) << " against " << lag_text(e02->lag, d.frames)
         << " frames). Before the change: " << g(e005->lag.steady_error) << " against " << g(e02->lag.steady_error)
         << (std::abs(e005->lag.steady_error - e02->lag.steady_error) <= 0.01 * e02->lag.steady_error
                 ? " (the same: over their first frames both average the whole history, α = max(α, 1/frames), so "
@@ -152,8 +138,8 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
     out << "The seed filters with a 3x3 box kernel and 9 iterations and shows 15 breaking the structure; "
            "`asvgf-box9` and `asvgf-box15` use that kernel, `asvgf` is the default (5x5 B3 spline, 5 iterations). "
            "Iteration i samples 2^i pixels apart: at "
-        << d.width << "x" << d.height << " iterations past " << int(std::ceil(std::log2(double(std::max(d.width, d.height)))))
-        << " reach beyond the image.\n\n";
+        << d.width << "x" << d.height << " iterations past "
+        << int(std::ceil(std::log2(double(std::max(d.width, d.height))))) << " reach beyond the image.\n\n";
     md.run_table(atrous_runs);
     out << "| run | à-trous ms/frame (sum of the `atrous.*` passes) |\n| --- | --- |\n";
     for (const RunResult* r : atrous_runs) {

@@ -24,8 +24,8 @@ std::string format_tick(double v) {
 // One axis: maps data values to pixels, linear or log10.
 struct Axis {
   bool log = false;
-  double lo = 0, hi = 1;   // in axis space (log10 when log)
-  double p0 = 0, p1 = 1;   // pixel positions of lo and hi
+  double lo = 0, hi = 1;       // in axis space (log10 when log)
+  double p0 = 0, p1 = 1;       // pixel positions of lo and hi
   bool zeros_on_edge = false;  // log axis: draw exact zeros at lo's edge instead of dropping them
 
   bool valid(double v) const { return std::isfinite(v) && (!log || v > 0 || (zeros_on_edge && v == 0)); }
@@ -82,8 +82,9 @@ void draw_series_line(Canvas& c, const Series& s, const Axis& ax, const Axis& ay
         for (double t = 0; t < len;) {
           const double period = std::fmod(dash_phase + t, 13.0), on = period < 8.0;
           const double step = std::min(len - t, on ? 8.0 - period : 13.0 - period);
-          if (on) c.line(px + (x - px) * t / len, py + (y - py) * t / len, px + (x - px) * (t + step) / len,
-                         py + (y - py) * (t + step) / len, s.color, 2.0);
+          if (on)
+            c.line(px + (x - px) * t / len, py + (y - py) * t / len, px + (x - px) * (t + step) / len,
+                   py + (y - py) * (t + step) / len, s.color, 2.0);
           t += std::max(step, 1e-3);
         }
         dash_phase = std::fmod(dash_phase + len, 13.0);
@@ -96,15 +97,15 @@ void draw_series_line(Canvas& c, const Series& s, const Axis& ax, const Axis& ay
 }  // namespace
 
 Rgba palette_color(std::size_t i) {
-  static constexpr Rgba colors[] = {{31, 119, 180, 255},  {255, 127, 14, 255}, {44, 160, 44, 255},
-                                    {214, 39, 40, 255},   {148, 103, 189, 255}, {140, 86, 75, 255},
-                                    {227, 119, 194, 255}, {127, 127, 127, 255}, {188, 189, 34, 255},
-                                    {23, 190, 207, 255}};
+  static constexpr Rgba colors[] = {
+      {31, 119, 180, 255}, {255, 127, 14, 255},  {44, 160, 44, 255},   {214, 39, 40, 255},  {148, 103, 189, 255},
+      {140, 86, 75, 255},  {227, 119, 194, 255}, {127, 127, 127, 255}, {188, 189, 34, 255}, {23, 190, 207, 255}};
   return colors[i % std::size(colors)];
 }
 
 Marker palette_marker(std::size_t i) {
-  static constexpr Marker markers[] = {Marker::Circle, Marker::Square, Marker::Triangle, Marker::Diamond, Marker::Cross};
+  static constexpr Marker markers[] = {Marker::Circle, Marker::Square, Marker::Triangle, Marker::Diamond,
+                                       Marker::Cross};
   return markers[i % std::size(markers)];
 }
 

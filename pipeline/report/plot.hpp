@@ -27,8 +27,8 @@ struct PlotSpec {
   std::vector<Series> series;
   std::optional<std::pair<double, double>> shade_x;  // e.g. the frames while the scene changes
   std::string shade_label;
-  std::string subtitle;  // grey line under the title (scene, size)
-  std::string note;      // red line under that (e.g. "CPU-emulated GPU time")
+  std::string subtitle;        // grey line under the title (scene, size)
+  std::string note;            // red line under that (e.g. "CPU-emulated GPU time")
   bool zeros_on_edge = false;  // log y: exact zeros drawn on the bottom edge (say so in `note`)
 };
 

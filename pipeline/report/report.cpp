@@ -80,13 +80,14 @@ Headline compute_headline(const ReportData& data) {
   const CurveHit hit = interpolate_loglog(spp, err, h.asvgf_relmse);
   h.k = hit.x;
   h.beyond_max = hit.below_range;
-  const bool timed = std::isfinite(h.asvgf_ms) && std::all_of(ms.begin(), ms.end(), [](double v) { return std::isfinite(v); });
+  const bool timed =
+      std::isfinite(h.asvgf_ms) && std::all_of(ms.begin(), ms.end(), [](double v) { return std::isfinite(v); });
   const std::string err_text = "(mean relMSE " + short_num(h.asvgf_relmse) + ")";
   if (h.k) {
     h.accumulation_ms = timed ? evaluate_loglog(spp, ms, *h.k) : NAN;
     h.speedup = h.accumulation_ms / h.asvgf_ms;
-    h.text = "At 1 spp `asvgf` " + err_text + " reaches the error of plain accumulation at K = " + short_num(*h.k) +
-             " spp";
+    h.text =
+        "At 1 spp `asvgf` " + err_text + " reaches the error of plain accumulation at K = " + short_num(*h.k) + " spp";
     h.text += timed ? ", in " + short_num(h.speedup) + " times less GPU time (" + short_num(h.asvgf_ms) +
                           " ms against " + short_num(h.accumulation_ms) + " ms a frame)."
                     : "; no GPU times (the device has no timestamps).";
@@ -95,15 +96,14 @@ Headline compute_headline(const ReportData& data) {
     h.speedup = ms.back() / h.asvgf_ms;
     h.text = "At 1 spp `asvgf` " + err_text + " is below the error of plain accumulation at every measured spp: K > " +
              short_num(spp.back()) + " spp (raise --max-accumulation-spp)";
-    h.text += timed ? ", already " + short_num(h.speedup) + " times less GPU time than " + short_num(spp.back()) +
-                          " spp."
-                    : ".";
+    h.text += timed
+                  ? ", already " + short_num(h.speedup) + " times less GPU time than " + short_num(spp.back()) + " spp."
+                  : ".";
   } else {
     h.text = "At 1 spp `asvgf` " + err_text + " does not reach the error of plain accumulation at " +
              short_num(spp.front()) + " spp (" + short_num(err.front()) + ").";
   }
-  if (timed && data.cpu_device)
-    h.text += " GPU times are CPU-emulated (" + data.device_name + "): no speed claim.";
+  if (timed && data.cpu_device) h.text += " GPU times are CPU-emulated (" + data.device_name + "): no speed claim.";
 
   // Errors after a change mostly measure lag (and are ~0 once light-exit's room is dark), so also
   // compare on the frames before it, where every method sees the same still, lit scene.
@@ -114,11 +114,13 @@ Headline compute_headline(const ReportData& data) {
     const CurveHit b = interpolate_loglog(spp, before, asvgf->lag.steady_error);
     h.k_before_change = b.x;
     const std::string frames = "frames 1.." + std::to_string(asvgf->lag.change_frame - 1);
-    h.before_change_text = "Before the change (" + frames + ", " + data.animation + "'s still start; the histories are still short): `asvgf` has mean relMSE " +
+    h.before_change_text = "Before the change (" + frames + ", " + data.animation +
+                           "'s still start; the histories are still short): `asvgf` has mean relMSE " +
                            short_num(asvgf->lag.steady_error) + ", ";
     if (b.x)
-      h.before_change_text += "plain accumulation's at K = " + short_num(*b.x) + " spp" +
-                              (timed ? " (" + short_num(evaluate_loglog(spp, ms, *b.x) / h.asvgf_ms) + " times the GPU time)" : "") + ".";
+      h.before_change_text +=
+          "plain accumulation's at K = " + short_num(*b.x) + " spp" +
+          (timed ? " (" + short_num(evaluate_loglog(spp, ms, *b.x) / h.asvgf_ms) + " times the GPU time)" : "") + ".";
     else if (b.below_range)
       h.before_change_text += "below accumulation's at every measured spp (K > " + short_num(spp.back()) + ").";
     else
@@ -150,8 +152,9 @@ std::string report_csv(const ReportData& data) {
     const bool temporal = filtered || s.method == frame::Method::Ema;
     for (const auto& f : r.frames) {
       csv << s.name << "," << frame::to_string(s.method) << "," << s.spp << ","
-          << (temporal ? num(s.denoise.alpha) : "") << "," << (temporal ? (s.method == frame::Method::Asvgf ? "1" : "0") : "")
-          << "," << (filtered ? std::to_string(s.denoise.atrous_iterations) : "") << ","
+          << (temporal ? num(s.denoise.alpha) : "") << ","
+          << (temporal ? (s.method == frame::Method::Asvgf ? "1" : "0") : "") << ","
+          << (filtered ? std::to_string(s.denoise.atrous_iterations) : "") << ","
           << (filtered ? (s.denoise.kernel == passes::AtrousKernel::Box ? "box" : "b3spline") : "") << "," << f.frame
           << "," << num(f.relmse) << "," << num(f.ssim) << "," << num(f.temporal) << "," << num(f.mean) << ","
           << num(f.reference_mean) << "," << (f.gpu_ms ? num(*f.gpu_ms) : "");

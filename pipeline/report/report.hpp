@@ -32,9 +32,9 @@ struct RunSpec {
 struct FrameResult {
   int frame = 0;
   double relmse = 0, ssim = 0;
-  double temporal = 0;  // NaN on the first frame (no previous frame)
-  double mean = 0, reference_mean = 0;  // mean RGB radiance of the frame and of its reference
-  std::optional<double> gpu_ms;         // whole frame; empty without timestamps
+  double temporal = 0;                                  // NaN on the first frame (no previous frame)
+  double mean = 0, reference_mean = 0;                  // mean RGB radiance of the frame and of its reference
+  std::optional<double> gpu_ms;                         // whole frame; empty without timestamps
   std::vector<std::pair<std::string, double>> pass_ms;  // in execution order
 };
 
@@ -44,8 +44,8 @@ struct RunResult {
   std::map<int, CropCell> crops;  // display-image crops of the frames the report shows
   // Filled by summarise():
   double mean_relmse = 0, mean_ssim = 0, mean_temporal = 0;
-  double mean_relmse_after_change = 0;  // frames from the change on (all frames when none)
-  double gpu_ms = 0;                    // median whole-frame GPU ms; NaN without timestamps
+  double mean_relmse_after_change = 0;                  // frames from the change on (all frames when none)
+  double gpu_ms = 0;                                    // median whole-frame GPU ms; NaN without timestamps
   std::vector<std::pair<std::string, double>> pass_ms;  // median per pass, in pass order
   Lag lag;
   EnergyBias energy;
@@ -100,6 +100,7 @@ std::string report_csv(const ReportData& data);
 std::string report_markdown(const ReportData& data, const Headline& headline);
 // error_vs_time.png, relmse_per_frame.png, temporal_per_frame.png, ssim_per_frame.png, crops.png,
 // crops_change.png (when the animation changes). Returns the file names written.
-std::vector<std::string> write_plots(const ReportData& data, const Headline& headline, const std::filesystem::path& dir);
+std::vector<std::string> write_plots(const ReportData& data, const Headline& headline,
+                                     const std::filesystem::path& dir);
 
 }  // namespace asvgf::report

@@ -49,7 +49,8 @@ PlotSpec per_frame_plot(const ReportData& d, const Headline& h, const std::strin
                         double FrameResult::*field, bool log_y) {
   PlotSpec p;
   p.title = title;
-  p.subtitle = d.scene + ", " + std::to_string(d.width) + "x" + std::to_string(d.height) + ", seed " + std::to_string(d.seed);
+  p.subtitle =
+      d.scene + ", " + std::to_string(d.width) + "x" + std::to_string(d.height) + ", seed " + std::to_string(d.seed);
   p.x_label = "frame";
   p.y_label = y_label;
   p.log_y = log_y;
@@ -118,7 +119,8 @@ std::vector<std::string> write_plots(const ReportData& d, const Headline& h, con
     }
     save(draw_plot(p), "error_vs_time.png");
   }
-  save(draw_plot(per_frame_plot(d, h, "relMSE per frame", "relMSE", &FrameResult::relmse, true)), "relmse_per_frame.png");
+  save(draw_plot(per_frame_plot(d, h, "relMSE per frame", "relMSE", &FrameResult::relmse, true)),
+       "relmse_per_frame.png");
   save(draw_plot(per_frame_plot(d, h, "temporal error per frame", "temporal error", &FrameResult::temporal, true)),
        "temporal_per_frame.png");
   save(draw_plot(per_frame_plot(d, h, "SSIM per frame", "SSIM", &FrameResult::ssim, false)), "ssim_per_frame.png");

@@ -63,7 +63,7 @@ struct EnergyBias {
 EnergyBias energy_bias(const std::vector<double>& mean, const std::vector<double>& reference_mean,
                        std::optional<ChangeWindow> change, int ramp);
 
-double mean(const std::vector<double>& v);    // of the finite values; NaN when none
-double median(std::vector<double> v);          // of the finite values; NaN when none
+double mean(const std::vector<double>& v);  // of the finite values; NaN when none
+double median(std::vector<double> v);       // of the finite values; NaN when none
 
 }  // namespace asvgf::report

@@ -12,6 +12,10 @@
                                            and OTHER_BACKEND (same seed) than between SAME and
                                            OTHER_SEED: the backend is within the seed's noise
   report_check.py timed DIR                every row has a positive whole-frame GPU time
+  report_check.py scenes DIR SCENES RUNS   asvgf report --scenes: each scene's folder passes `check`
+                                           with RUNS; summary.csv has every scene x run with finite
+                                           errors; summary.md has a table row per scene and shown
+                                           method, linking the scene's report.md
   report_check.py energy DIR               report.md's energy bias is a number for every run, and for
                                            runs without a history (raw, accum-*) the ratio of
                                            report.csv's mean to reference_mean over all frames, minus 1
@@ -143,6 +147,37 @@ def check(directory, expected):
     print("report_check: ok: %d runs x %d frames, %d plots" % (len(runs), frames.pop(), len(pngs)))
 
 
+def scenes(directory, names, runs):
+    for name in names:
+        check(os.path.join(directory, name), runs)
+    path = os.path.join(directory, "summary.csv")
+    if not os.path.isfile(path):
+        fail(path + " is missing")
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    seen = {(row["scene"].split("/")[0], row["run"]) for row in rows}
+    for name in names:
+        for run in runs:
+            if (name, run) not in seen:
+                fail("summary.csv has no row for scene %s, run %s" % (name, run))
+    for row in rows:
+        for col in ["mean_relmse", "mean_ssim", "mean_temporal"]:
+            if not finite(row[col]):
+                fail("summary.csv %s %s: %s is %r" % (row["scene"], row["run"], col, row[col]))
+    md_path = os.path.join(directory, "summary.md")
+    if not os.path.isfile(md_path):
+        fail("summary.md is missing")
+    md = open(md_path, encoding="utf-8").read()
+    shown = [r for r in runs if not r.startswith("accum")]
+    for name in names:
+        for run in shown:
+            needle = "](%s/report.md) | %s |" % (name, run)
+            if needle not in md:
+                fail("summary.md has no row %r" % needle)
+    print("report_check: ok: %d scenes x %d runs in summary.csv, %d table rows" % (
+        len(names), len(runs), len(names) * len(shown)))
+
+
 def numbers(directory):
     rows = read_csv(directory)
     keep = [c for c in rows[0].keys() if not c.endswith("_ms")]
@@ -245,6 +280,8 @@ if __name__ == "__main__":
         noise(sys.argv[2], sys.argv[3], sys.argv[4])
     elif len(sys.argv) == 3 and sys.argv[1] == "timed":
         timed(sys.argv[2])
+    elif len(sys.argv) == 5 and sys.argv[1] == "scenes":
+        scenes(sys.argv[2], sys.argv[3].split(","), sys.argv[4].split(","))
     elif len(sys.argv) == 3 and sys.argv[1] == "energy":
         energy(sys.argv[2])
     elif len(sys.argv) == 4 and sys.argv[1] in ("same", "differ"):

@@ -1,0 +1,28 @@
+#include "report/text.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace asvgf::report {
+
+std::string number_text(double v, int digits) {
+  if (!std::isfinite(v)) return "–";
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+std::string energy_text(const EnergyBias& e) {
+  if (!e.bias) return "n/a";
+  char text[64];
+  std::snprintf(text, sizeof text, "%+.2f%% (%d frames)", 100.0 * *e.bias, e.frames);
+  return text;
+}
+
+std::string lag_text(const Lag& lag, int frames) {
+  if (!lag.measured) return "n/a";
+  if (!lag.frames) return "> " + std::to_string(frames - 1 - lag.change_frame);
+  return std::to_string(*lag.frames);
+}
+
+}  // namespace asvgf::report
