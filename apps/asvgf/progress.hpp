@@ -2,17 +2,20 @@
 // otherwise (logs), nothing when quiet.
 #pragma once
 
+#include <unistd.h>
 #include <chrono>
 #include <cstdio>
 #include <string>
-#include <unistd.h>
 
 namespace asvgf::cli {
 
 class Progress {
  public:
   Progress(std::string what, int total, bool quiet)
-      : what_(std::move(what)), total_(total), quiet_(quiet), tty_(isatty(fileno(stderr)) != 0),
+      : what_(std::move(what)),
+        total_(total),
+        quiet_(quiet),
+        tty_(isatty(fileno(stderr)) != 0),
         start_(std::chrono::steady_clock::now()) {}
 
   void step(int done, const std::string& note = {}) {

@@ -94,6 +94,8 @@ std::vector<report::RunSpec> all_runs(std::uint32_t max_accumulation_spp) {
   add("asvgf", "A-SVGF: adaptive α, 5 à-trous iterations (B3 5x5)", Method::Asvgf, none);
   add("asvgf-reproj", "A-SVGF, gradient from reprojected noisy luminance (no re-shading; Q2RTX's LF)", Method::Asvgf,
       [](report::RunSpec& s) { s.denoise.gradient_source = passes::GradientSource::Reprojected; });
+  add("asvgf-nodemod", "A-SVGF filtering radiance with the albedo in it (--no-demodulation)", Method::Asvgf,
+      [](report::RunSpec& s) { s.demodulate = false; });
   add("asvgf-box9", "A-SVGF, the seed's 3x3 box kernel, 9 iterations", Method::Asvgf, [](report::RunSpec& s) {
     s.denoise.kernel = passes::AtrousKernel::Box;
     s.denoise.atrous_iterations = 9;
@@ -177,6 +179,34 @@ std::string command_line(const ReportOptions& o, int frames) {
   if (backend != "vulkan") s += " --backend " + backend;
   if (o.timing != "auto") s += " --timing " + o.timing;
   return s;
+}
+
+bool has_textures(const scene::Scene& scene) {
+  return std::any_of(scene.materials.begin(), scene.materials.end(),
+                     [](const scene::Material& m) { return m.albedo_texture >= 0; });
+}
+
+// Per frame, which pixels see a textured surface: the G-buffer's albedo with the textures and with
+// every material's texture dropped differs exactly there (a texel of exactly 1 would read as
+// untextured; the built-in textures stay below).
+std::vector<std::vector<std::uint8_t>> texture_masks(hal::Device& device, const scene::Scene& scene,
+                                                     render::RenderSettings s, int frames) {
+  s.method = frame::Method::Raw;
+  s.spp = 1;
+  s.aovs = true;
+  scene::Scene plain = scene;
+  for (auto& m : plain.materials) m.albedo_texture = -1;
+  render::Renderer textured(device, scene, s), untextured(device, plain, s);
+  std::vector<std::vector<std::uint8_t>> masks;
+  for (int f = 0; f < frames; ++f) {
+    const auto a = textured.render(f), b = untextured.render(f);
+    std::vector<std::uint8_t> mask(std::size_t(a.width) * a.height, 0);
+    for (std::size_t p = 0; p < mask.size(); ++p)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(a.aovs->albedo[4 * p + c] - b.aovs->albedo[4 * p + c]) > 1e-4f) mask[p] = 1;
+    masks.push_back(std::move(mask));
+  }
+  return masks;
 }
 
 // One scene's report, written to `dir` (report.md, report.csv, plots).
@@ -265,11 +295,21 @@ report::SceneReport report_scene(const ReportOptions& o, const std::vector<repor
   }
   std::erase_if(d.reference_crops, [&](const auto& e) { return !stored.count(e.first); });
 
+  std::vector<std::vector<std::uint8_t>> textured;
+  if (has_textures(scene)) {
+    progress.step(done, "finding the textured pixels");
+    textured = texture_masks(device, scene, base, frames);
+    std::size_t count = 0;
+    for (const auto& m : textured) count += std::size_t(std::count(m.begin(), m.end(), std::uint8_t(1)));
+    d.textured_fraction = double(count) / (double(d.width) * d.height * frames);
+  }
+
   for (const auto& spec : specs) {
     render::RenderSettings s = base;
     s.method = spec.method;
     s.spp = spec.spp;
     s.denoise = spec.denoise;
+    s.demodulate = spec.demodulate;
     render::Renderer renderer(device, scene, s);
     report::RunResult run;
     run.spec = spec;
@@ -285,6 +325,10 @@ report::SceneReport report_scene(const ReportOptions& o, const std::vector<repor
       fr.temporal =
           f > 0 ? report::temporal_error(img.hdr, prev, ref, reference[std::size_t(group[std::size_t(f) - 1])]) : NAN;
       fr.mean = render::mean_value(img.hdr);
+      if (!textured.empty()) {
+        fr.relmse_textured = render::relative_mse(img.hdr, ref, textured[std::size_t(f)], true);
+        fr.relmse_untextured = render::relative_mse(img.hdr, ref, textured[std::size_t(f)], false);
+      }
       fr.reference_mean = reference_mean[gi];
       if (!d.timed_separately) {
         FrameTime t = frame_time(renderer);

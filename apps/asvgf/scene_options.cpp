@@ -39,7 +39,7 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--scene", o.scene, "Built-in scene (cornell, glossy, textured, many) or a scene file (.json)")
       ->capture_default_str();
   cmd.add_option("--animation", o.animation, "Animation of the built-in scene")
-      ->check(CLI::IsMember({"static", "light-exit", "orbit", "boxes-move"}))
+      ->check(CLI::IsMember(scene::builtin_animations()))
       ->capture_default_str();
   cmd.add_option("--method", o.method, "raw, ema, svgf, asvgf or reference")
       ->check(CLI::IsMember({"raw", "ema", "svgf", "asvgf", "reference"}))
@@ -51,6 +51,8 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--max-bounces", o.max_bounces, "Path length after the primary hit")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
+  cmd.add_flag("--no-demodulation", o.no_demodulation,
+               "Denoise radiance with the albedo in it instead of radiance / albedo (does the filter blur textures?)");
   add_denoise_options(cmd, o);
 }
 
@@ -115,6 +117,7 @@ render::RenderSettings render_settings(const SceneOptions& o) {
   s.max_bounces = o.max_bounces;
   s.seed = o.seed;
   s.denoise = o.denoise;
+  s.demodulate = !o.no_demodulation;
   if (o.software_bvh) s.ray_query = false;
   return s;
 }

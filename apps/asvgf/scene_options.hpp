@@ -25,10 +25,11 @@ struct SceneOptions {
   passes::DenoiseSettings denoise;
   std::string kernel = "b3spline";
   std::string gradient_source = "reshaded";
+  bool no_demodulation = false;  // --no-demodulation: filter radiance, albedo included
 };
 
 // Registers --scene --animation --method --size --backend --device --software-bvh --validation
-// --seed --max-bounces and the denoiser parameters on `cmd`.
+// --seed --max-bounces --no-demodulation and the denoiser parameters on `cmd`.
 void add_scene_options(CLI::App& cmd, SceneOptions& options);
 // The denoiser parameters alone (--alpha ... --history-tap, --kernel), part of add_scene_options.
 void add_denoise_options(CLI::App& cmd, SceneOptions& options);

@@ -15,11 +15,16 @@ using graph::ResourceId;
 
 std::string_view to_string(Method method) {
   switch (method) {
-    case Method::Raw: return "raw";
-    case Method::Ema: return "ema";
-    case Method::Svgf: return "svgf";
-    case Method::Asvgf: return "asvgf";
-    case Method::Reference: return "reference";
+    case Method::Raw:
+      return "raw";
+    case Method::Ema:
+      return "ema";
+    case Method::Svgf:
+      return "svgf";
+    case Method::Asvgf:
+      return "asvgf";
+    case Method::Reference:
+      return "reference";
   }
   return "?";
 }
@@ -30,8 +35,7 @@ std::optional<Method> method_from_string(std::string_view name) {
   return std::nullopt;
 }
 
-FrameGraphBuilder::FrameGraphBuilder(hal::Device& device)
-    : pipelines_(device), counters_(device) {}
+FrameGraphBuilder::FrameGraphBuilder(hal::Device& device) : pipelines_(device), counters_(device) {}
 
 graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render::SceneGpu& scene_gpu,
                                             const FrameTargets& targets) {
@@ -45,7 +49,8 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const passes::SceneInputs scene = passes::import_scene(g, scene_gpu, w, h);
   const ResourceId hdr = g.import("hdr", targets.hdr, targets.hdr_state, w, h, F::RGBA32F);
   const ResourceId display = g.import("display", targets.display, targets.display_state, w, h, F::RGBA8Unorm);
-  const ResourceId rays = g.import_buffer("ray_counter", targets.ray_counter, targets.ray_counter_state, kRayCounterSize);
+  const ResourceId rays =
+      g.import_buffer("ray_counter", targets.ray_counter, targets.ray_counter_state, kRayCounterSize);
   const ResourceId counters = counters_.import(g);
   g.output(rays, hal::State::CopySrc);
   // Persistent: read next frame as histories.
@@ -57,7 +62,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const ResourceId motion = g.add_image("motion", w, h, F::RGBA32F);  // xy used
   const ResourceId albedo = g.add_image("albedo", w, h, F::RGBA16F);
 
-  passes::add_gbuffer(g, pipelines_, scene, {vbuffer, depth_normal, motion, albedo}, w, h);
+  passes::add_gbuffer(g, pipelines_, scene, {vbuffer, depth_normal, motion, albedo}, w, h, s.demodulate);
 
   // A-SVGF's temporal gradient: forward-projected samples, then delta and Delta at 1/3 resolution.
   const std::string not_moved = "nothing in the scene, camera or lights moved since the last frame";
@@ -75,7 +80,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
                                 s.frame, w, h, gradients ? "" : not_moved);
   }
   passes::add_pathtrace(g, pipelines_, scene, vbuffer, gradients ? gradient_seeds : std::nullopt, illumination, seeds,
-                        rays, {s.frame, s.seed, s.max_bounces, s.spp}, w, h);
+                        rays, {s.frame, s.seed, s.max_bounces, s.spp, s.demodulate}, w, h);
   ResourceId input = illumination;
   if (s.method == Method::Reference) {
     const ResourceId accumulation = g.add_image("accumulation", w, h, F::RGBA32F, Lifetime::Persistent);
@@ -84,18 +89,19 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   }
   const passes::Filter filter = s.method == Method::Raw || s.method == Method::Reference ? passes::Filter::None
                                 : s.method == Method::Ema                                ? passes::Filter::Temporal
-                                                                                         : passes::Filter::Spatiotemporal;
-  const passes::DenoiserOutputs denoised = passes::add_denoiser(
-      g, pipelines_,
-      {input, motion, depth_normal, albedo, counters, hdr, display,
-       adaptive ? std::optional(gradient_prev) : std::nullopt, gradients ? "" : not_moved},
-      denoise, filter);
+                                                          : passes::Filter::Spatiotemporal;
+  const passes::DenoiserOutputs denoised =
+      passes::add_denoiser(g, pipelines_,
+                           {input, motion, depth_normal, albedo, counters, hdr, display,
+                            adaptive ? std::optional(gradient_prev) : std::nullopt, gradients ? "" : not_moved},
+                           denoise, filter);
   g.output(hdr, hal::State::CopySrc);
   g.output(display, hal::State::CopySrc);
 
   // The intermediate-buffer view is an output only when asked for; otherwise it is culled.
-  const ResourceId debug = targets.debug ? g.import("debug_view", targets.debug, targets.debug_state, w, h, F::RGBA8Unorm)
-                                         : g.add_image("debug_view", w, h, F::RGBA8Unorm);
+  const ResourceId debug = targets.debug
+                               ? g.import("debug_view", targets.debug, targets.debug_state, w, h, F::RGBA8Unorm)
+                               : g.add_image("debug_view", w, h, F::RGBA8Unorm);
   passes::add_debug_view(g, pipelines_,
                          {depth_normal, motion, albedo, illumination, debug, denoised.gradient, denoised.moments,
                           denoised.variance, denoise},
@@ -104,7 +110,8 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
 
   if (targets.aovs) {
     if (s.method == Method::Reference)
-      throw hal::Error(hal::ErrorKind::InvalidUsage, "frame AOVs", "the reference method has no denoiser inputs to export");
+      throw hal::Error(hal::ErrorKind::InvalidUsage, "frame AOVs",
+                       "the reference method has no denoiser inputs to export");
     const AovTargets& a = *targets.aovs;
     auto import = [&](const char* name, const ImageTarget& t, std::uint32_t iw, std::uint32_t ih) {
       const ResourceId id = g.import(name, t.image, t.state, iw, ih, F::RGBA32F);

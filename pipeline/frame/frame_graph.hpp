@@ -38,6 +38,9 @@ struct FrameConfig {
   std::uint32_t seed = 0;                       // --seed
   passes::DenoiseSettings denoise;              // `adaptive` is set from the method (on for asvgf only)
   std::optional<passes::DebugView> debug_view;  // also produce this intermediate-buffer view (demo)
+  // False (--no-demodulation): the denoiser filters radiance with the albedo in it, not
+  // illumination = radiance / albedo (the seed's question: does filtering blur textures?).
+  bool demodulate = true;
 };
 
 // One frame's graph: the run's choices and what changes from frame to frame.

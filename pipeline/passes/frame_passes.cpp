@@ -34,14 +34,13 @@ Camera uniform_camera(const render::GpuCamera& c) {
 
 // The scene buffers `shader` actually binds (the optimiser drops unused ones).
 std::vector<Binding> scene_bindings(const SceneInputs& s, const hal::ShaderInfo& shader) {
-  std::vector<Binding> all = {{"triangles", s.triangles},
-                              {"previous_triangles", s.previous_triangles},
-                              {"materials", s.materials},
-                              {"lights", s.lights},
-                              {"triangle_uvs", s.triangle_uvs},
-                              {"texels", s.texels}};
-  if (s.ray_query) all.push_back({"scene", s.tlas});
-  else all.insert(all.end(), {{"bvh_nodes", s.bvh_nodes}, {"bvh_triangles", s.bvh_triangles}});
+  std::vector<Binding> all = {{"triangles", s.triangles},       {"previous_triangles", s.previous_triangles},
+                              {"materials", s.materials},       {"lights", s.lights},
+                              {"triangle_uvs", s.triangle_uvs}, {"texels", s.texels}};
+  if (s.ray_query)
+    all.push_back({"scene", s.tlas});
+  else
+    all.insert(all.end(), {{"bvh_nodes", s.bvh_nodes}, {"bvh_triangles", s.bvh_triangles}});
   std::vector<Binding> used;
   for (auto& b : all)
     if (shader.find(b.name)) used.push_back(std::move(b));
@@ -74,31 +73,41 @@ SceneInputs import_scene(graph::RenderGraph& graph, const render::SceneGpu& scen
   return s;
 }
 
-void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                 const GbufferTargets& t, std::uint32_t width, std::uint32_t height) {
+void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene, const GbufferTargets& t,
+                 std::uint32_t width, std::uint32_t height, bool demodulate) {
   const hal::ShaderInfo& shader = scene.ray_query ? shaders::gbuffer_rayquery : shaders::gbuffer_software;
   using Camera = shaders::gbuffer_software_uniforms::Camera;
-  const GbufferParams params{uniform_camera<Camera>(scene.camera), uniform_camera<Camera>(scene.previous_camera), width,
-                             height, scene.sphere_count, 0};
+  const GbufferParams params{uniform_camera<Camera>(scene.camera),
+                             uniform_camera<Camera>(scene.previous_camera),
+                             width,
+                             height,
+                             scene.sphere_count,
+                             demodulate ? 1u : 0u};
   auto bindings = scene_bindings(scene, shader);
-  bindings.insert(bindings.end(), {{"visibility", t.visibility},
-                                   {"depth_normal", t.depth_normal},
-                                   {"motion", t.motion},
-                                   {"albedo", t.albedo}});
-  add_compute_pass(graph, "gbuffer", shader, pipelines.get<decltype(params)>(shader), std::move(bindings), to_bytes(params),
-                   {width, height, 1});
+  bindings.insert(
+      bindings.end(),
+      {{"visibility", t.visibility}, {"depth_normal", t.depth_normal}, {"motion", t.motion}, {"albedo", t.albedo}});
+  add_compute_pass(graph, "gbuffer", shader, pipelines.get<decltype(params)>(shader), std::move(bindings),
+                   to_bytes(params), {width, height, 1});
 }
 
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
                    graph::ResourceId visibility, std::optional<graph::ResourceId> gradient_seeds,
                    graph::ResourceId illumination, graph::ResourceId rng_seed, graph::ResourceId ray_counter,
-                   const PathtraceSettings& s,
-                   std::uint32_t width, std::uint32_t height, const std::string& name) {
+                   const PathtraceSettings& s, std::uint32_t width, std::uint32_t height, const std::string& name) {
   const hal::ShaderInfo& shader =
       scene.ray_query ? (gradient_seeds ? shaders::pathtrace_rayquery_gradients : shaders::pathtrace_rayquery)
                       : (gradient_seeds ? shaders::pathtrace_software_gradients : shaders::pathtrace_software);
-  const PathtraceParams params{uniform_camera<shaders::pathtrace_software_uniforms::Camera>(scene.camera), width, height, s.frame, s.seed, scene.light_count, scene.sphere_count,
-                               s.max_bounces, s.spp};
+  const PathtraceParams params{uniform_camera<shaders::pathtrace_software_uniforms::Camera>(scene.camera),
+                               width,
+                               height,
+                               s.frame,
+                               s.seed,
+                               scene.light_count,
+                               scene.sphere_count,
+                               s.max_bounces,
+                               s.spp,
+                               s.demodulate ? 1u : 0u};
   auto bindings = scene_bindings(scene, shader);
   bindings.insert(bindings.end(), {{"visibility", visibility},
                                    {"illumination", illumination},
@@ -110,29 +119,30 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
 }
 
 void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                         const GradientSelectTargets& t, std::uint32_t frame, std::uint32_t width,
-                         std::uint32_t height, const std::string& skip_reason) {
+                         const GradientSelectTargets& t, std::uint32_t frame, std::uint32_t width, std::uint32_t height,
+                         const std::string& skip_reason) {
   const std::uint32_t sw = groups_for(width, 3), sh = groups_for(height, 3);
   const GradientClearParams clear{width, height, sw, sh};
-  add_compute_pass(graph, "gradient_clear", shaders::gradient_clear, pipelines.get<GradientClearParams>(shaders::gradient_clear),
-                   {{"claims", t.claims},
-                    {"gradient_seeds", t.gradient_seeds},
-                    {"gradient_prev", t.gradient_prev}},
+  add_compute_pass(graph, "gradient_clear", shaders::gradient_clear,
+                   pipelines.get<GradientClearParams>(shaders::gradient_clear),
+                   {{"claims", t.claims}, {"gradient_seeds", t.gradient_seeds}, {"gradient_prev", t.gradient_prev}},
                    to_bytes(clear), {width, height, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
   // Bids, then the winners write: the lowest bid wins whatever order invocations run in.
-  const GradientSelectParams select{uniform_camera<shaders::gradient_select_uniforms::Camera>(scene.camera),
-                                    width, height, sw, sh, frame, 0, 0, 0};
-  const GradientResolveParams resolve{uniform_camera<shaders::gradient_resolve_uniforms::Camera>(scene.camera),
-                                      width, height, sw, sh, frame, 0, 0, 0};
-  add_compute_pass(graph, "gradient_select", shaders::gradient_select, pipelines.get<GradientSelectParams>(shaders::gradient_select),
+  const GradientSelectParams select{
+      uniform_camera<shaders::gradient_select_uniforms::Camera>(scene.camera), width, height, sw, sh, frame, 0, 0, 0};
+  const GradientResolveParams resolve{
+      uniform_camera<shaders::gradient_resolve_uniforms::Camera>(scene.camera), width, height, sw, sh, frame, 0, 0, 0};
+  add_compute_pass(graph, "gradient_select", shaders::gradient_select,
+                   pipelines.get<GradientSelectParams>(shaders::gradient_select),
                    {{"triangles", scene.triangles},
                     {"prev_visibility", t.visibility, true},
                     {"depth_normal", t.depth_normal},
                     {"claims", t.claims}},
                    to_bytes(select), {sw, sh, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
-  add_compute_pass(graph, "gradient_resolve", shaders::gradient_resolve, pipelines.get<GradientResolveParams>(shaders::gradient_resolve),
+  add_compute_pass(graph, "gradient_resolve", shaders::gradient_resolve,
+                   pipelines.get<GradientResolveParams>(shaders::gradient_resolve),
                    {{"triangles", scene.triangles},
                     {"prev_visibility", t.visibility, true},
                     {"prev_rng_seed", t.rng_seed, true},
@@ -149,19 +159,18 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
 void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId illumination,
                     graph::ResourceId accumulation, bool history_valid, std::uint32_t width, std::uint32_t height) {
   const AccumulateParams params{width, height, history_valid ? 1u : 0u, 0};
-  add_compute_pass(graph, "accumulate", shaders::accumulate, pipelines.get<AccumulateParams>(shaders::accumulate),
-                   {{"illumination", illumination},
-                    {"prev_accumulation", accumulation, true},
-                    {"accumulation", accumulation}},
-                   to_bytes(params), {width, height, 1});
+  add_compute_pass(
+      graph, "accumulate", shaders::accumulate, pipelines.get<AccumulateParams>(shaders::accumulate),
+      {{"illumination", illumination}, {"prev_accumulation", accumulation, true}, {"accumulation", accumulation}},
+      to_bytes(params), {width, height, 1});
 }
 
 void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const DebugViewInputs& in, DebugView view,
                     std::uint32_t width, std::uint32_t height) {
   // Buffers the method lacks are bound to the noisy input (always there) and flagged unavailable.
   const std::uint32_t available = (in.gradient ? 1u : 0u) | (in.moments ? 2u : 0u) | (in.variance ? 4u : 0u);
-  const DebugViewParams params{width, height, static_cast<std::uint32_t>(view), 0.25f, in.denoise.alpha, in.denoise.history_cap,
-                               available, 0};
+  const DebugViewParams params{
+      width, height, static_cast<std::uint32_t>(view), 0.25f, in.denoise.alpha, in.denoise.history_cap, available, 0};
   add_compute_pass(graph, "debug_view", shaders::debug_view, pipelines.get<DebugViewParams>(shaders::debug_view),
                    {{"depth_normal", in.depth_normal},
                     {"motion", in.motion},

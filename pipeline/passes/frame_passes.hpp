@@ -26,14 +26,16 @@ SceneInputs import_scene(graph::RenderGraph& graph, const render::SceneGpu& scen
 struct GbufferTargets {
   graph::ResourceId visibility, depth_normal, motion, albedo;
 };
+// `demodulate` false: the albedo written is 1 (the denoiser then filters radiance, albedo included).
 void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                 const GbufferTargets& targets, std::uint32_t width, std::uint32_t height);
+                 const GbufferTargets& targets, std::uint32_t width, std::uint32_t height, bool demodulate = true);
 
 struct PathtraceSettings {
   std::uint32_t frame = 0;        // decorrelates frames
   std::uint32_t seed = 0;         // --seed: the whole run's random numbers
   std::uint32_t max_bounces = 4;  // path length after the primary hit
   std::uint32_t spp = 1;          // samples per pixel in this dispatch
+  bool demodulate = true;         // false: illumination is radiance (no division by the albedo)
 };
 // `gradient_seeds` present: the A-SVGF variant that starts carried pixels from last frame's point.
 // `ray_counter`: a buffer whose first uint the pass adds the rays it traced to (closest-hit and
@@ -41,8 +43,8 @@ struct PathtraceSettings {
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
                    graph::ResourceId visibility, std::optional<graph::ResourceId> gradient_seeds,
                    graph::ResourceId illumination, graph::ResourceId rng_seed, graph::ResourceId ray_counter,
-                   const PathtraceSettings& settings,
-                   std::uint32_t width, std::uint32_t height, const std::string& name = "pathtrace");
+                   const PathtraceSettings& settings, std::uint32_t width, std::uint32_t height,
+                   const std::string& name = "pathtrace");
 
 struct GradientSelectTargets {
   graph::ResourceId visibility;    // persistent: last frame's version is read
@@ -67,15 +69,22 @@ void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::
 // temporal gradient lambda, the temporal blend factor alpha, the luminance standard deviation that
 // steers the a-trous filter, the history length; black where the method has no such buffer.
 enum class DebugView : std::uint32_t {
-  Normals = 0, Depth = 1, Motion = 2, Albedo = 3, NoisyInput = 4,
-  Gradient = 5, Alpha = 6, Variance = 7, HistoryLength = 8
+  Normals = 0,
+  Depth = 1,
+  Motion = 2,
+  Albedo = 3,
+  NoisyInput = 4,
+  Gradient = 5,
+  Alpha = 6,
+  Variance = 7,
+  HistoryLength = 8
 };
 struct DebugViewInputs {
   graph::ResourceId depth_normal, motion, albedo, illumination, target;
   std::optional<graph::ResourceId> gradient;  // 1/3 res (delta^, Delta^), when the gradient ran this frame
   std::optional<graph::ResourceId> moments;   // temporal's output (E[l], E[l^2], n)
   std::optional<graph::ResourceId> variance;  // colour with variance in .a (variance pass, or temporal's)
-  DenoiseSettings denoise;                     // what the temporal pass used (alpha, history cap)
+  DenoiseSettings denoise;                    // what the temporal pass used (alpha, history cap)
 };
 void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const DebugViewInputs& inputs, DebugView view,
                     std::uint32_t width, std::uint32_t height);

@@ -1,6 +1,7 @@
 #include "render/metrics.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -17,8 +18,25 @@ double relative_mse(std::span<const float> x, std::span<const float> r) {
   return sum / double(x.size() / 4 * 3);
 }
 
+double relative_mse(std::span<const float> x, std::span<const float> r, std::span<const std::uint8_t> mask,
+                    bool selected) {
+  if (x.size() != r.size() || x.size() != mask.size() * 4) throw std::invalid_argument("relative_mse: sizes differ");
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t p = 0; p < mask.size(); ++p) {
+    if ((mask[p] != 0) != selected) continue;
+    ++n;
+    for (int c = 0; c < 3; ++c) {
+      const double d = double(x[4 * p + c]) - double(r[4 * p + c]);
+      sum += d * d / (double(r[4 * p + c]) * double(r[4 * p + c]) + 0.01);
+    }
+  }
+  return n == 0 ? std::numeric_limits<double>::quiet_NaN() : sum / double(n * 3);
+}
+
 double ssim(std::span<const float> x, std::span<const float> r, std::uint32_t w, std::uint32_t h) {
-  if (x.size() != r.size() || x.size() != std::size_t(w) * h * 4) throw std::invalid_argument("ssim: image sizes differ");
+  if (x.size() != r.size() || x.size() != std::size_t(w) * h * 4)
+    throw std::invalid_argument("ssim: image sizes differ");
   auto lum = [](std::span<const float> img, std::size_t p) {
     const double l = 0.2126 * img[4 * p] + 0.7152 * img[4 * p + 1] + 0.0722 * img[4 * p + 2];
     return std::max(l, 0.0) / (1.0 + std::max(l, 0.0));

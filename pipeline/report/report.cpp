@@ -50,6 +50,10 @@ void summarise(RunResult& run, std::optional<ChangeWindow> change) {
   run.mean_ssim = mean(ssim);
   run.mean_temporal = mean(temporal);
   run.mean_relmse_after_change = mean(after);
+  std::vector<double> textured, untextured;
+  for (const auto& f : run.frames) textured.push_back(f.relmse_textured), untextured.push_back(f.relmse_untextured);
+  run.mean_relmse_textured = mean(textured);
+  run.mean_relmse_untextured = mean(untextured);
   run.gpu_ms = median(gpu);
   run.pass_ms.clear();
   for (const auto& p : order) run.pass_ms.emplace_back(p, median(passes[p]));

@@ -3,6 +3,7 @@
 // report.md and the PNG plots.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -23,6 +24,7 @@ struct RunSpec {
   frame::Method method = frame::Method::Asvgf;
   std::uint32_t spp = 1;
   passes::DenoiseSettings denoise;
+  bool demodulate = true;  // false: the denoiser filters radiance, albedo included (--no-demodulation)
   bool accumulation() const { return method == frame::Method::Reference; }
   // Frames until the temporal history is saturated (alpha_eff = max(alpha, 1/n) reaches alpha);
   // 0 for methods without a history.
@@ -32,9 +34,12 @@ struct RunSpec {
 struct FrameResult {
   int frame = 0;
   double relmse = 0, ssim = 0;
-  double temporal = 0;                                  // NaN on the first frame (no previous frame)
-  double mean = 0, reference_mean = 0;                  // mean RGB radiance of the frame and of its reference
-  std::optional<double> gpu_ms;                         // whole frame; empty without timestamps
+  double temporal = 0;                  // NaN on the first frame (no previous frame)
+  double mean = 0, reference_mean = 0;  // mean RGB radiance of the frame and of its reference
+  std::optional<double> gpu_ms;         // whole frame; empty without timestamps
+  // relMSE over the pixels whose surface is textured and over the others (scenes with albedo
+  // textures); NaN where the frame has none of them.
+  double relmse_textured = NAN, relmse_untextured = NAN;
   std::vector<std::pair<std::string, double>> pass_ms;  // in execution order
 };
 
@@ -44,8 +49,9 @@ struct RunResult {
   std::map<int, CropCell> crops;  // display-image crops of the frames the report shows
   // Filled by summarise():
   double mean_relmse = 0, mean_ssim = 0, mean_temporal = 0;
-  double mean_relmse_after_change = 0;                  // frames from the change on (all frames when none)
-  double gpu_ms = 0;                                    // median whole-frame GPU ms; NaN without timestamps
+  double mean_relmse_after_change = 0;  // frames from the change on (all frames when none)
+  double gpu_ms = 0;                    // median whole-frame GPU ms; NaN without timestamps
+  double mean_relmse_textured = NAN, mean_relmse_untextured = NAN;
   std::vector<std::pair<std::string, double>> pass_ms;  // median per pass, in pass order
   Lag lag;
   EnergyBias energy;
@@ -68,6 +74,9 @@ struct ReportData {
   int crop_zoom = 1;
   std::vector<RunResult> runs;
   std::map<int, CropCell> reference_crops;
+  // Scenes with albedo textures: the fraction of pixels (over all frames) whose primary surface is
+  // textured; 0 without textures (no texture section).
+  double textured_fraction = 0;
   std::string command_line;
   double wall_seconds = 0;
 };

@@ -24,6 +24,10 @@ layout(set = 0, binding = 0, std140) uniform Params {
   uint sphere_count;
   uint max_bounces;
   uint spp;
+  uint demodulate;  // 0: leave the albedo in the signal (--no-demodulation)
+  uint pad0;        // WGSL rounds a uniform block up to 16 bytes: the C++ struct must be that size
+  uint pad1;
+  uint pad2;
 } params;
 
 #include "frame/scene_bindings.glsl"
@@ -272,7 +276,7 @@ void shade_pixel(ivec2 p) {
     if (dot(n, x - cam.position.xyz) > 0.0) n = -n;
     vec3 v = normalize(cam.position.xyz - x);
     vec3 albedo = surface_albedo(vis.y, b);
-    demodulation = demodulation_albedo(vis.y, b, dot(n, v));
+    if (params.demodulate != 0u) demodulation = demodulation_albedo(vis.y, b, dot(n, v));
     vec3 emission = materials.values[t.material].emission.rgb;
     for (uint s = 0u; s < params.spp; ++s) {
       uint state = s == 0u ? seed : pcg_hash(seed + s);

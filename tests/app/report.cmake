@@ -4,10 +4,10 @@ set(report_dir ${CMAKE_CURRENT_BINARY_DIR}/report_tests)
 set(report_check "python3 ${CMAKE_CURRENT_SOURCE_DIR}/report_check.py")
 set(report_tiny --size 24x24 --frames 10 --reference-spp 32 --max-accumulation-spp 4 --quiet)
 list(JOIN report_tiny " " report_tiny_args)
-set(report_all_runs raw,ema-0.2,ema-0.05,svgf,asvgf,asvgf-reproj,asvgf-box9,asvgf-box15,accum-1spp,accum-2spp,accum-4spp)
+set(report_all_runs raw,ema-0.2,ema-0.05,svgf,asvgf,asvgf-reproj,asvgf-nodemod,asvgf-box9,asvgf-box15,accum-1spp,accum-2spp,accum-4spp)
 
 asvgf_add_cli_test("asvgf report writes every method with finite numbers and valid PNG plots" LABEL app EXIT 0
-                   MATCH "report_check: ok: 11 runs x 10 frames"
+                   MATCH "report_check: ok: 12 runs x 10 frames"
                    COMMAND bash -c "rm -rf ${report_dir}/all && $<TARGET_FILE:asvgf> report ${report_tiny_args} --out ${report_dir}/all && ${report_check} check ${report_dir}/all ${report_all_runs}")
 asvgf_add_cli_test("asvgf report gives the same numbers for the same seed and others for another" LABEL app EXIT 0
                    MATCH "rows differ in relMSE"
@@ -19,7 +19,7 @@ asvgf_add_cli_test("asvgf report gives the same numbers for the same seed and ot
 # take other paths, and the filters spread them a little. Measured ratios backend/seed on llvmpipe:
 # relMSE 0.07, SSIM 0.27, temporal error 0.59 (it weighs the frames after the light left most).
 asvgf_add_cli_test("asvgf report --backend gl gives Vulkan's numbers within seed noise" LABEL app EXIT 0
-                   MATCH "report_check: ok: 11 runs within noise"
+                   MATCH "report_check: ok: 12 runs within noise"
                    COMMAND bash -c "rm -rf ${report_dir}/backend_vk ${report_dir}/backend_gl ${report_dir}/backend_seed && $<TARGET_FILE:asvgf> report ${report_tiny_args} --seed 3 --out ${report_dir}/backend_vk && $<TARGET_FILE:asvgf> report ${report_tiny_args} --seed 3 --backend gl --out ${report_dir}/backend_gl && $<TARGET_FILE:asvgf> report ${report_tiny_args} --seed 4 --out ${report_dir}/backend_seed && ${report_check} noise ${report_dir}/backend_vk ${report_dir}/backend_gl ${report_dir}/backend_seed")
 asvgf_add_cli_test("asvgf report --methods restricts the runs and says where the report landed" LABEL app EXIT 0
                    MATCH "report: [^ ]*report_tests/methods/report\\.md"
@@ -28,7 +28,7 @@ asvgf_add_cli_test("asvgf report --timing separate times every frame in a back-t
                    MATCH "rendered a second time for timing"
                    COMMAND bash -c "rm -rf ${report_dir}/timing && $<TARGET_FILE:asvgf> report ${report_tiny_args} --methods asvgf,accum --timing separate --out ${report_dir}/timing && ${report_check} check ${report_dir}/timing asvgf,accum-1spp,accum-4spp && ${report_check} timed ${report_dir}/timing && grep -o 'rendered a second time for timing' ${report_dir}/timing/report.md")
 asvgf_add_cli_test("asvgf report on the static room gives every run an energy bias (ema-0.05 saturates after 20 of 24 frames), as report.csv's means say" LABEL app EXIT 0
-                   MATCH "report_check: ok: energy bias of 11 runs"
+                   MATCH "report_check: ok: energy bias of 12 runs"
                    COMMAND bash -c "rm -rf ${report_dir}/energy && $<TARGET_FILE:asvgf> report --size 24x24 --frames 24 --reference-spp 32 --max-accumulation-spp 4 --quiet --animation static --out ${report_dir}/energy && ${report_check} energy ${report_dir}/energy")
 asvgf_add_cli_test("asvgf report --scenes all reports every built-in scene and a summary table over them" LABEL app EXIT 0
                    MATCH "report_check: ok: 4 scenes x 4 runs in summary.csv, 8 table rows"

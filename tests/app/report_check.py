@@ -174,6 +174,15 @@ def scenes(directory, names, runs):
             needle = "](%s/report.md) | %s |" % (name, run)
             if needle not in md:
                 fail("summary.md has no row %r" % needle)
+    if "textured" in names:
+        textured_md = open(os.path.join(directory, "textured", "report.md"), encoding="utf-8").read()
+        header = "| relMSE textured | relMSE untextured |"
+        if header not in textured_md:
+            fail("textured/report.md has no texture table")
+        table = textured_md[textured_md.index(header):].split("\n\n")[0]
+        row = next((line for line in table.splitlines() if line.startswith("| `asvgf` | ")), None)
+        if row is None or not all(finite(cell) for cell in row.split("|")[2:5]):
+            fail("textured/report.md: the asvgf row of the texture table is %r" % row)
     print("report_check: ok: %d scenes x %d runs in summary.csv, %d table rows" % (
         len(names), len(runs), len(names) * len(shown)))
 
