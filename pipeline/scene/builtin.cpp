@@ -78,8 +78,9 @@ Mesh room_mesh(const RoomMaterials& m) {
   return mesh;
 }
 
-// Unit cube [-0.5,0.5]^3, faces outward; instances scale and place it.
-Mesh box_mesh(const std::string& name, std::uint32_t material, float uv_repeat = 0.0f) {
+}  // namespace
+
+Mesh box_mesh(const std::string& name, std::uint32_t material, float uv_repeat) {
   Mesh mesh;
   mesh.name = name;
   for (int axis = 0; axis < 3; ++axis) {
@@ -93,6 +94,8 @@ Mesh box_mesh(const std::string& name, std::uint32_t material, float uv_repeat =
   }
   return mesh;
 }
+
+namespace {
 
 // sRGB bytes of a grey level in [0, 1] (linear), for the procedural textures.
 std::uint8_t srgb_byte(float linear) {

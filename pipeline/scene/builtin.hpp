@@ -37,6 +37,10 @@ inline constexpr float kCornellHalfExtent = 1.0f;  // the room spans [-1,1] on e
 inline constexpr float kCornellLightRadius = 0.12f;
 inline constexpr float kCornellLightRadiance = 80.0f;  // per channel, see builtin.cpp
 
+// The unit cube [-0.5,0.5]^3 with outward faces, every triangle `material`; uv_repeat > 0 gives
+// each face texture coordinates spanning the texture that many times. Instances scale and place it.
+Mesh box_mesh(const std::string& name, std::uint32_t material, float uv_repeat = 0.0f);
+
 std::vector<std::string> builtin_scenes();
 std::vector<std::string> builtin_animations();  // animations of every built-in scene
 

@@ -11,7 +11,6 @@
 //   boxes-move  every eighth sphere rises 1.5 units between frames 3 and 7
 #include "scene/builtin_many.hpp"
 
-#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -62,27 +61,6 @@ Mesh sphere_mesh(const std::string& name, std::uint32_t material) {
   return m;
 }
 
-// Unit cube [-0.5,0.5]^3 with outward faces.
-Mesh cube_mesh(std::uint32_t material) {
-  Mesh m;
-  m.name = "box";
-  for (int axis = 0; axis < 3; ++axis) {
-    for (const float side : {-1.0f, 1.0f}) {
-      glm::vec3 n(0.0f), u(0.0f), v(0.0f);
-      n[axis] = 0.5f * side;
-      u[(axis + 1) % 3] = 0.5f;
-      v[(axis + 2) % 3] = 0.5f;
-      std::array<glm::vec3, 4> c{n - u - v, n + u - v, n + u + v, n - u + v};
-      if (glm::dot(glm::cross(c[1] - c[0], c[2] - c[0]), n) < 0.0f) std::swap(c[1], c[3]);
-      const auto base = static_cast<std::uint32_t>(m.positions.size());
-      m.positions.insert(m.positions.end(), c.begin(), c.end());
-      m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-      m.materials.insert(m.materials.end(), {material, material});
-    }
-  }
-  return m;
-}
-
 Instance placed(std::string name, std::uint32_t mesh, glm::vec3 at, float scale, float yaw_degrees = 0.0f) {
   Transform t;
   t.translation = at;
@@ -114,8 +92,8 @@ Scene many_scene(const std::string& animation) {
   const auto first_sphere_mesh = static_cast<std::uint32_t>(s.meshes.size());
   for (std::uint32_t c = 0; c < std::size(colours); ++c)
     s.meshes.push_back(sphere_mesh("sphere" + std::to_string(c), c));
-  const auto box_mesh = static_cast<std::uint32_t>(s.meshes.size());
-  s.meshes.push_back(cube_mesh(0));
+  const auto box_index = static_cast<std::uint32_t>(s.meshes.size());
+  s.meshes.push_back(box_mesh("box", 0));
 
   const float origin = -0.5f * kSpacing * (kGrid - 1);
   for (int i = 0; i < kManySpheres; ++i) {
@@ -130,7 +108,7 @@ Scene many_scene(const std::string& animation) {
     const float size = 0.5f + 0.3f * hash01(2u * i + 1000u);
     const glm::vec3 at{origin + kSpacing * (0.5f + i % (kGrid - 1)), 0.5f * size,
                        origin + kSpacing * (0.5f + i / (kGrid - 1))};
-    s.instances.push_back(placed("box" + std::to_string(i), box_mesh, at, size, 90.0f * hash01(2u * i + 2000u)));
+    s.instances.push_back(placed("box" + std::to_string(i), box_index, at, size, 90.0f * hash01(2u * i + 2000u)));
   }
   for (int l = 0; l < kManyLights; ++l) {
     const glm::vec3 at{l % 2 == 0 ? -6.0f : 6.0f, 7.0f, l / 2 == 0 ? -6.0f : 6.0f};
