@@ -384,8 +384,12 @@ std::vector<std::string> scene_list(const std::string& list) {
       throw CLI::ValidationError(
           "--scenes", "'" + token + "' is neither a built-in scene (" + valid + ", or all) nor a scene file (.json)");
     }
-    if (std::find(names.begin(), names.end(), token) != names.end())
-      throw CLI::ValidationError("--scenes", "'" + token + "' is listed twice");
+    // Each scene's report goes to OUT/<file stem>: two names with one stem would share a folder.
+    const std::string stem = std::filesystem::path(token).stem().string();
+    for (const std::string& other : names)
+      if (std::filesystem::path(other).stem().string() == stem)
+        throw CLI::ValidationError("--scenes", "'" + token + "' and '" + other + "' would both write to " + stem +
+                                                   "/ (list each scene once, file names distinct)");
     names.push_back(token);
   }
   if (names.empty()) throw CLI::ValidationError("--scenes", "names no scene");

@@ -39,7 +39,8 @@ Mesh sphere_mesh(const std::string& name, std::uint32_t material) {
   m.name = name;
   auto vertex = [](int stack, int slice) {
     const float theta = std::numbers::pi_v<float> * static_cast<float>(stack) / kStacks;
-    const float phi = 2.0f * std::numbers::pi_v<float> * static_cast<float>(slice) / kSlices;
+    // slice % kSlices: the seam's last column reuses the first's vertices exactly (no crack).
+    const float phi = 2.0f * std::numbers::pi_v<float> * static_cast<float>(slice % kSlices) / kSlices;
     return glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
   };
   for (int stack = 0; stack < kStacks; ++stack) {

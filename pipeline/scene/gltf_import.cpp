@@ -171,6 +171,8 @@ struct Importer {
     if (auto it = material_of.find(index); it != material_of.end()) return it->second;
     Material mat;
     if (index < 0) {
+      // Primitives without a material stay our Lambertian default (albedo 0.8), not glTF's default
+      // material (a white rough metal), which would turn untextured test geometry into mirrors.
       mat.name = "default";
     } else {
       if (static_cast<std::size_t>(index) >= model.materials.size())

@@ -141,11 +141,9 @@ vec3 sample_light(vec3 x, vec3 n, uint self, Vertex vertex, inout uint state) {
     if (s.w <= 0.0) return vec3(0.0);
     dir = s.xyz;
     float t_hit;
-    int hit = hit_sphere_lights(x, dir, 0.0, 1e30, index + 1u, t_hit);
-    if (hit != int(index)) {
-      // Another sphere in front: let that one be counted by its own sample.
-      if (hit < 0) return vec3(0.0);
-    }
+    // Another sphere light in front occludes this one (its own sample counts it), as does a miss.
+    int hit = hit_sphere_lights(x, dir, 0.0, 1e30, params.sphere_count, t_hit);
+    if (hit != int(index)) return vec3(0.0);
     dist = t_hit;
     pdf_light = s.w * l.pdf;
   } else {

@@ -36,6 +36,9 @@ asvgf_add_cli_test("asvgf report --scenes all reports every built-in scene and a
 asvgf_add_cli_test("asvgf report --scenes rejects an unknown scene with exit 2, naming it and the valid ones" LABEL app EXIT 2
                    MATCH "--scenes.*'kitchen' is neither a built-in scene \\(cornell, glossy, textured, many"
                    COMMAND ${asvgf} report --scenes cornell,kitchen --out ${report_dir}/never)
+asvgf_add_cli_test("asvgf report --scenes refuses two scenes that would share a report folder, exit 2" LABEL app EXIT 2
+                   MATCH "--scenes.*would both write to cornell/"
+                   COMMAND ${asvgf} report --scenes cornell,glossy,cornell --out ${report_dir}/never)
 asvgf_add_cli_test("asvgf report rejects an unknown --methods entry with exit 2" LABEL app EXIT 2 MATCH "--methods.*magic"
                    COMMAND ${asvgf} report --methods asvgf,magic --out ${report_dir}/never)
 asvgf_add_cli_test("asvgf report rejects an impossible size with exit 2" LABEL app EXIT 2 MATCH "size"
