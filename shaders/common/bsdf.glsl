@@ -14,6 +14,7 @@
 #define ASVGF_COMMON_BSDF_GLSL
 
 #include "common/sampling.glsl"
+#include "common/scene_data.glsl"  // luminance()
 
 // No delta lobes: smoother surfaces are traced as alpha = kMinAlpha (roughness 0.045), whose GGX
 // peak D = 1 / (pi alpha^2) ~ 8e4 stays far inside float range.
@@ -31,8 +32,6 @@ bool is_glossy(float metallic, float specular) { return metallic > 0.0 || specul
 Glossy make_glossy(vec3 base, float roughness, float metallic, float specular) {
   return Glossy(base, metallic, max(roughness * roughness, kMinAlpha), specular);
 }
-
-float bsdf_luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 float schlick_weight(float x) {
   float k = 1.0 - clamp(x, 0.0, 1.0);
@@ -62,8 +61,8 @@ float ggx_lambda(float mu, float alpha) {
 // The probability of choosing the GGX lobe: its Fresnel weight against the diffuse one, kept in
 // [0.1, 0.9] when both exist so that neither lobe is starved.
 float glossy_lobe_probability(Glossy g, float n_v) {
-  float s = bsdf_luminance(fresnel(g, n_v));
-  float d = bsdf_luminance(diffuse_weight(g, n_v));
+  float s = luminance(fresnel(g, n_v));
+  float d = luminance(diffuse_weight(g, n_v));
   if (d <= 0.0) return 1.0;
   return clamp(s / (s + d), 0.1, 0.9);
 }
