@@ -175,6 +175,8 @@ bool SceneGpu::update(float frame) {
   device_.wait();
   scene::FrameState next = scene::evaluate(scene_, frame);
   const bool moved = first_ || !scene::same_state(next, state_);
+  // The BVH (or BLAS) depends on the triangles only: a camera path or a moving light keeps it.
+  const bool geometry_moved = first_ || next.instance_transforms != state_.instance_transforms;
   previous_ = first_ ? next : state_;
   state_ = std::move(next);
   std::vector<GpuTriangle> triangles = world_triangles(state_);
@@ -193,11 +195,11 @@ bool SceneGpu::update(float frame) {
     for (auto b : {materials_, triangle_uvs_, texels_})
       to_read.push_back({b, hal::State::CopyDst, hal::State::ShaderRead});
   std::vector<glm::vec3> corners;
-  if (moved) {
+  if (geometry_moved) {
     corners.reserve(3 * triangles.size());
     for (const auto& t : triangles) corners.insert(corners.end(), {t.p0, t.p1, t.p2});
   }
-  if (moved && ray_query_) {
+  if (geometry_moved && ray_query_) {
     device_.upload_buffer(accel_boxes_, 0, bytes_of(padded_triangle_boxes(corners)));
     const hal::State accel_state = first_ ? hal::State::Undefined : hal::State::AccelRead;
     commands->barrier({{accel_boxes_, hal::State::CopyDst, hal::State::AccelBuildInput},
@@ -208,7 +210,7 @@ bool SceneGpu::update(float frame) {
     const hal::TlasInstance instance{blas_};
     commands->build_tlas(tlas_, std::span(&instance, 1), false);
     commands->barrier({tlas_, hal::State::AccelWrite, hal::State::AccelRead});
-  } else if (moved) {
+  } else if (geometry_moved) {
     bvh_ = build_bvh(corners);
     device_.upload_buffer(bvh_nodes_, 0, bytes_of(bvh_.nodes));
     device_.upload_buffer(bvh_triangles_, 0, bytes_of(bvh_.triangles));

@@ -140,7 +140,9 @@ bool trace_any(vec3 o, vec3 d, float tmin, float tmax, uint skip) {
 
 const uint kBvhStackSize = 48u;  // render::kMaxBvhDepth
 
-// Distance to a node's box, or a value > tmax when the ray misses it.
+// Where the ray enters a node's box within [tmin, tmax], or -1.0 when it misses it (callers pass
+// tmin >= 0). The miss was once tmax + 1.0, which rounds back to tmax at the callers' tmax of 1e30:
+// every box counted as entered until a triangle was hit, and a ray into the sky visited the whole tree.
 float box_entry(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float tmin, float tmax) {
   vec3 t0 = (bmin - o) * inv_d;
   vec3 t1 = (bmax - o) * inv_d;
@@ -148,7 +150,7 @@ float box_entry(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float tmin, float tmax
   vec3 hi = max(t0, t1);
   float enter = max(max(lo.x, lo.y), max(lo.z, tmin));
   float leave = min(min(hi.x, hi.y), min(hi.z, tmax));
-  return enter <= leave ? enter : tmax + 1.0;
+  return enter <= leave ? enter : -1.0;
 }
 
 vec3 safe_inverse(vec3 d) {
@@ -158,7 +160,7 @@ vec3 safe_inverse(vec3 d) {
               1.0 / (abs(d.z) > tiny ? d.z : (d.z >= 0.0 ? tiny : -tiny)));
 }
 
-// any_hit: stop at the first hit found.
+// any_hit: stop at the first hit found. tmin >= 0 (box_entry's miss is negative).
 Hit traverse(vec3 o, vec3 d, float tmin, float tmax, uint skip, bool any_hit) {
   Hit h = no_hit(tmax);
   ShearedRay r = shear_ray(o, d);
@@ -185,11 +187,11 @@ Hit traverse(vec3 o, vec3 d, float tmin, float tmax, uint skip, bool any_hit) {
     } else {
       uint left = first;
       uint right = first + 1u;
-      // A box entered exactly at h.t may still hold a tie with a lower index: `<=`, not `<`.
+      // A box entered exactly at h.t may still hold a tie with a lower index: box_entry keeps it.
       float tl = box_entry(o, inv_d, bvh_nodes.values[left].bmin, bvh_nodes.values[left].bmax, tmin, h.t);
       float tr = box_entry(o, inv_d, bvh_nodes.values[right].bmin, bvh_nodes.values[right].bmax, tmin, h.t);
-      bool hit_l = tl <= h.t;
-      bool hit_r = tr <= h.t;
+      bool hit_l = tl >= 0.0;
+      bool hit_r = tr >= 0.0;
       if (hit_l && hit_r) {
         // Nearer child first; the other waits on the stack.
         uint near_child = tl <= tr ? left : right;

@@ -3,8 +3,11 @@
 #include <cstring>
 #include <string>
 
+#include <glm/glm.hpp>
+
 #include "backends.hpp"
 #include "data.hpp"
+#include "shaders/hal_test_box_entry.hpp"
 #include "shaders/hal_test_image.hpp"
 #include "shaders/hal_test_ray_query.rayquery.hpp"
 #include "shaders/hal_test_scale.hpp"
@@ -99,6 +102,62 @@ TEST_CASE("conformance: hal_test_image dispatch matches the CPU") {
     for (std::size_t k = 0; k < out.size(); ++k)
       if (out[k] != input[k] * 4.0f - 1.0f) ++wrong;
     CHECK(wrong == 0);
+  });
+}
+
+TEST_CASE("conformance: the BVH ray/box test reports a miss at every tmax, also 1e30 where tmax + 1 == tmax") {
+  // Rays along +z from the origin; each case: (tmin, tmax, box min, box max, expected entry or -1).
+  struct Case {
+    float tmin, tmax;
+    glm::vec3 lo, hi;
+    float expected;
+  };
+  std::vector<Case> cases;
+  for (float tmax : {10.0f, 1e6f, 1e30f, 3.0e38f}) {
+    cases.push_back({0.0f, tmax, {5, 0, 2}, {6, 1, 3}, -1.0f});      // beside the ray
+    cases.push_back({0.0f, tmax, {-1, -1, -3}, {1, 1, -2}, -1.0f});  // behind the origin
+    cases.push_back({0.0f, tmax, {-1, -1, 2}, {1, 1, 3}, 2.0f});     // ahead: entered at z = 2
+    cases.push_back({0.0f, tmax, {-1, -1, -1}, {1, 1, 1}, 0.0f});    // around the origin: entered at tmin
+  }
+  cases.push_back({0.0f, 1.5f, {-1, -1, 2}, {1, 1, 3}, -1.0f});  // ahead but past tmax
+  cases.push_back({0.0f, 2.0f, {-1, -1, 2}, {1, 1, 3}, 2.0f});   // entered exactly at tmax: kept (ties)
+  cases.push_back({2.5f, 1e30f, {-1, -1, 2}, {1, 1, 3}, 2.5f});  // tmin inside the box
+  cases.push_back({3.5f, 1e30f, {-1, -1, 2}, {1, 1, 3}, -1.0f}); // tmin past the box
+
+  std::vector<float> input;
+  for (const Case& c : cases) {
+    const float v[16] = {0, 0, 0, c.tmin, 0, 0, 1, c.tmax, c.lo.x, c.lo.y, c.lo.z, 0, c.hi.x, c.hi.y, c.hi.z, 0};
+    input.insert(input.end(), v, v + 16);
+  }
+  for_each_backend([&](hal::Device& device) {
+    const hal::ShaderInfo& shader = asvgf::shaders::hal_test_box_entry;
+    const auto count = static_cast<std::uint32_t>(cases.size());
+    const auto src = device.create_buffer(
+        {"box cases", input.size() * 4, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst});
+    const auto dst =
+        device.create_buffer({"box entries", count * 4, hal::BufferUsage::Storage | hal::BufferUsage::CopySrc});
+    device.upload_buffer(src, 0, as_bytes(input));
+    const auto pipeline = device.create_pipeline({"box entry", &shader});
+    const auto set = device.create_binding_set({"box entry set", pipeline, {{"cases", src}, {"entries", dst}}});
+    auto cmd = device.create_command_list("box entry");
+    cmd->barrier({src, State::CopyDst, State::ShaderRead});
+    cmd->barrier({dst, State::Undefined, State::ShaderWrite});
+    Uniforms uniforms(shader);
+    uniforms.set("count", count);
+    cmd->dispatch({pipeline, set, uniforms.bytes(), 1, 1, 1});
+    cmd->barrier({dst, State::ShaderWrite, State::CopySrc});
+    device.submit(*cmd);
+    device.wait();
+    std::vector<float> out(count);
+    device.read_buffer(dst, 0, as_writable(out));
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const Case& c = cases[i];
+      // traverse() enters a box when box_entry is >= 0: a miss must stay negative.
+      if (c.expected < 0.0f)
+        CHECK_MESSAGE(out[i] < 0.0f, "case " << i << " (tmax " << c.tmax << "): a missed box gave entry " << out[i]);
+      else
+        CHECK_MESSAGE(out[i] == c.expected, "case " << i << " (tmax " << c.tmax << "): entry " << out[i]);
+    }
   });
 }
 
