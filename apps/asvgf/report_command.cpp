@@ -158,6 +158,32 @@ report::CropCell crop(const std::vector<std::uint8_t>& rgba, std::uint32_t width
   return c;
 }
 
+// Where reflections change most: the crop-sized window holding the largest luminance change, over
+// the pixels `mask` marks, between the reference `before` and `after` (RGBA float images). Scans
+// window positions 8 pixels apart with a summed-area table.
+CropRegion most_changed_region(const std::vector<float>& before, const std::vector<float>& after,
+                               const std::vector<std::uint8_t>& mask, std::uint32_t width, std::uint32_t height,
+                               CropRegion size) {
+  std::vector<double> sum((std::size_t(width) + 1) * (height + 1), 0.0);
+  auto at = [&](std::uint32_t x, std::uint32_t y) -> double& { return sum[std::size_t(y) * (width + 1) + x]; };
+  for (std::uint32_t y = 0; y < height; ++y)
+    for (std::uint32_t x = 0; x < width; ++x) {
+      const std::size_t p = std::size_t(y) * width + x;
+      double change = 0;
+      if (mask[p])
+        for (int c = 0; c < 3; ++c) change += std::abs(double(after[4 * p + c]) - double(before[4 * p + c]));
+      at(x + 1, y + 1) = change + at(x, y + 1) + at(x + 1, y) - at(x, y);
+    }
+  CropRegion best = size;
+  double best_change = -1;
+  for (std::uint32_t y = 0; y + size.h <= height; y += 8)
+    for (std::uint32_t x = 0; x + size.w <= width; x += 8) {
+      const double c = at(x + size.w, y + size.h) - at(x, y + size.h) - at(x + size.w, y) + at(x, y);
+      if (c > best_change) best_change = c, best.x = x, best.y = y;
+    }
+  return best;
+}
+
 void write_atomic(const std::filesystem::path& path, const std::string& text) {
   const auto tmp = std::filesystem::path(path).concat(".partial");
   {
@@ -181,25 +207,20 @@ std::string command_line(const ReportOptions& o, int frames) {
   return s;
 }
 
-bool has_textures(const scene::Scene& scene) {
-  return std::any_of(scene.materials.begin(), scene.materials.end(),
-                     [](const scene::Material& m) { return m.albedo_texture >= 0; });
-}
-
-// Per frame, which pixels see a textured surface: the G-buffer's albedo with the textures and with
-// every material's texture dropped differs exactly there (a texel of exactly 1 would read as
-// untextured; the built-in textures stay below).
-std::vector<std::vector<std::uint8_t>> texture_masks(hal::Device& device, const scene::Scene& scene,
-                                                     render::RenderSettings s, int frames) {
+// Per frame, which pixels see a material that `plain` changed: the G-buffer's albedo (what the
+// denoiser divides by) of `scene` and of `plain`, the same scene with some material property
+// dropped, differs exactly there. Dropping textures marks textured surfaces (a texel of exactly 1
+// would read as untextured; the built-in textures stay below); dropping the GGX lobe marks glossy
+// ones (their albedo is the lobes' directional albedo, not the base colour).
+std::vector<std::vector<std::uint8_t>> material_masks(hal::Device& device, const scene::Scene& scene,
+                                                      const scene::Scene& plain, render::RenderSettings s, int frames) {
   s.method = frame::Method::Raw;
   s.spp = 1;
   s.aovs = true;
-  scene::Scene plain = scene;
-  for (auto& m : plain.materials) m.albedo_texture = -1;
-  render::Renderer textured(device, scene, s), untextured(device, plain, s);
+  render::Renderer with(device, scene, s), without(device, plain, s);
   std::vector<std::vector<std::uint8_t>> masks;
   for (int f = 0; f < frames; ++f) {
-    const auto a = textured.render(f), b = untextured.render(f);
+    const auto a = with.render(f), b = without.render(f);
     std::vector<std::uint8_t> mask(std::size_t(a.width) * a.height, 0);
     for (std::size_t p = 0; p < mask.size(); ++p)
       for (int c = 0; c < 3; ++c)
@@ -267,7 +288,30 @@ report::SceneReport report_scene(const ReportOptions& o, const std::vector<repor
                  scene.name.c_str(), d.width, d.height, frames, specs.size(), o.reference_spp, d.reference_renders,
                  d.device_name.c_str());
 
+  auto fraction = [&](const std::vector<std::vector<std::uint8_t>>& masks) {
+    std::size_t count = 0;
+    for (const auto& m : masks) count += std::size_t(std::count(m.begin(), m.end(), std::uint8_t(1)));
+    return double(count) / (double(d.width) * d.height * frames);
+  };
+  const auto& materials = scene.materials;
+  std::vector<std::vector<std::uint8_t>> textured, glossy;
+  if (std::any_of(materials.begin(), materials.end(), [](const auto& m) { return m.albedo_texture >= 0; })) {
+    progress.step(done, "finding the textured pixels");
+    scene::Scene plain = scene;
+    for (auto& m : plain.materials) m.albedo_texture = -1;
+    textured = material_masks(device, scene, plain, base, frames);
+    d.textured_fraction = fraction(textured);
+  }
+  if (std::any_of(materials.begin(), materials.end(), [](const auto& m) { return m.glossy(); })) {
+    progress.step(done, "finding the glossy pixels");
+    scene::Scene matte = scene;
+    for (auto& m : matte.materials) m.metallic = m.specular = 0.0f;
+    glossy = material_masks(device, scene, matte, base, frames);
+    d.glossy_fraction = fraction(glossy);
+  }
+
   std::vector<std::vector<float>> reference(std::size_t(d.reference_renders));
+  std::vector<std::vector<std::uint8_t>> reference_display(reference.size());  // scenes with glossy materials
   std::vector<double> reference_mean(reference.size());
   {
     render::RenderSettings r = base;
@@ -284,6 +328,7 @@ report::SceneReport report_scene(const ReportOptions& o, const std::vector<repor
       reference_mean[gi] = render::mean_value(img.hdr);
       reference[gi] = std::move(img.hdr);
       d.reference_crops[f] = crop(img.display, d.width, region);
+      if (!glossy.empty()) reference_display[gi] = std::move(img.display);
       progress.step(++done, "reference frame " + std::to_string(f));
     }
   }
@@ -295,14 +340,21 @@ report::SceneReport report_scene(const ReportOptions& o, const std::vector<repor
   }
   std::erase_if(d.reference_crops, [&](const auto& e) { return !stored.count(e.first); });
 
-  std::vector<std::vector<std::uint8_t>> textured;
-  if (has_textures(scene)) {
-    progress.step(done, "finding the textured pixels");
-    textured = texture_masks(device, scene, base, frames);
-    std::size_t count = 0;
-    for (const auto& m : textured) count += std::size_t(std::count(m.begin(), m.end(), std::uint8_t(1)));
-    d.textured_fraction = double(count) / (double(d.width) * d.height * frames);
+  // Glossy scenes that change: a second crop where the reflections change most, for ghosting.
+  std::optional<CropRegion> glossy_region;
+  if (!glossy.empty() && d.change && d.change->first > 0) {
+    const int before = d.change->first - 1, after = d.change->last;
+    glossy_region = most_changed_region(reference[std::size_t(group[std::size_t(before)])],
+                                        reference[std::size_t(group[std::size_t(after)])], glossy[std::size_t(after)],
+                                        d.width, d.height, region);
+    d.glossy_crop_note = std::to_string(glossy_region->w) + "x" + std::to_string(glossy_region->h) + " crop at (" +
+                         std::to_string(glossy_region->x) + "," + std::to_string(glossy_region->y) + ")";
+    for (int f : stored)
+      d.reference_glossy_crops[f] =
+          crop(reference_display[std::size_t(group[std::size_t(f)])], d.width, *glossy_region);
   }
+  reference_display.clear();
+
 
   for (const auto& spec : specs) {
     render::RenderSettings s = base;
@@ -329,6 +381,10 @@ report::SceneReport report_scene(const ReportOptions& o, const std::vector<repor
         fr.relmse_textured = render::relative_mse(img.hdr, ref, textured[std::size_t(f)], true);
         fr.relmse_untextured = render::relative_mse(img.hdr, ref, textured[std::size_t(f)], false);
       }
+      if (!glossy.empty()) {
+        fr.relmse_glossy = render::relative_mse(img.hdr, ref, glossy[std::size_t(f)], true);
+        fr.relmse_matte = render::relative_mse(img.hdr, ref, glossy[std::size_t(f)], false);
+      }
       fr.reference_mean = reference_mean[gi];
       if (!d.timed_separately) {
         FrameTime t = frame_time(renderer);
@@ -336,6 +392,7 @@ report::SceneReport report_scene(const ReportOptions& o, const std::vector<repor
         fr.pass_ms = std::move(t.passes);
       }
       if (stored.count(f)) run.crops[f] = crop(img.display, d.width, region);
+      if (stored.count(f) && glossy_region) run.glossy_crops[f] = crop(img.display, d.width, *glossy_region);
       run.frames.push_back(std::move(fr));
       prev = std::move(img.hdr);
       char note[96];

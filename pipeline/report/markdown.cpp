@@ -217,6 +217,30 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
     }
   }
 
+  out << "### Glossy surfaces: reflections and ghosting\n\n";
+  if (d.glossy_fraction <= 0) {
+    out << "The scene has no glossy materials (try `--scene glossy`).\n\n";
+  } else {
+    out << "Diffuse and glossy reflection share one signal here: the radiance is divided by the surface's "
+           "directional albedo (its GGX part from Karis's split-sum fit), filtered and reprojected along the "
+           "surface's motion. A reflection moves with what it reflects, not with the surface, so a history "
+           "reprojected along the surface lags behind a moving object or light (ghosting). relMSE over the "
+           "pixels whose primary surface is glossy ("
+        << g(100.0 * d.glossy_fraction) << "% of the pixels over all frames) and over the matte ones"
+        << (d.change ? ", over all frames and from the change on (frame " + std::to_string(d.change->first) + ")" : "")
+        << ":\n\n";
+    out << "| run | relMSE glossy | relMSE matte | glossy / matte | glossy from the change on | matte from the change "
+           "on |\n| --- | --- | --- | --- | --- | --- |\n";
+    for (const auto& r : d.runs)
+      out << "| `" << r.spec.name << "` | " << g(r.mean_relmse_glossy) << " | " << g(r.mean_relmse_matte) << " | "
+          << g(r.mean_relmse_glossy / r.mean_relmse_matte) << " | " << g(r.glossy_after_change) << " | "
+          << g(r.matte_after_change) << " |\n";
+    out << "\n";
+    if (!d.reference_glossy_crops.empty())
+      out << "Where the reflections change most (" << d.glossy_crop_note
+          << "), the frames around the change:\n\n![glossy crops](crops_glossy.png)\n\n";
+  }
+
   out << "## Per-frame error\n\n![relMSE per frame](relmse_per_frame.png)\n\n"
       << "![temporal error per frame](temporal_per_frame.png)\n\n![SSIM per frame](ssim_per_frame.png)\n\n";
 

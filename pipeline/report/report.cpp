@@ -54,6 +54,15 @@ void summarise(RunResult& run, std::optional<ChangeWindow> change) {
   for (const auto& f : run.frames) textured.push_back(f.relmse_textured), untextured.push_back(f.relmse_untextured);
   run.mean_relmse_textured = mean(textured);
   run.mean_relmse_untextured = mean(untextured);
+  std::vector<double> glossy, matte, glossy_after, matte_after;
+  for (const auto& f : run.frames) {
+    glossy.push_back(f.relmse_glossy), matte.push_back(f.relmse_matte);
+    if (!change || f.frame >= change->first) glossy_after.push_back(f.relmse_glossy), matte_after.push_back(f.relmse_matte);
+  }
+  run.mean_relmse_glossy = mean(glossy);
+  run.mean_relmse_matte = mean(matte);
+  run.glossy_after_change = mean(glossy_after);
+  run.matte_after_change = mean(matte_after);
   run.gpu_ms = median(gpu);
   run.pass_ms.clear();
   for (const auto& p : order) run.pass_ms.emplace_back(p, median(passes[p]));

@@ -40,6 +40,8 @@ struct FrameResult {
   // relMSE over the pixels whose surface is textured and over the others (scenes with albedo
   // textures); NaN where the frame has none of them.
   double relmse_textured = NAN, relmse_untextured = NAN;
+  // The same over the pixels whose surface is glossy (a GGX lobe) and the matte ones.
+  double relmse_glossy = NAN, relmse_matte = NAN;
   std::vector<std::pair<std::string, double>> pass_ms;  // in execution order
 };
 
@@ -47,11 +49,16 @@ struct RunResult {
   RunSpec spec;
   std::vector<FrameResult> frames;
   std::map<int, CropCell> crops;  // display-image crops of the frames the report shows
+  std::map<int, CropCell> glossy_crops;  // the same frames where reflections change most (glossy scenes)
   // Filled by summarise():
   double mean_relmse = 0, mean_ssim = 0, mean_temporal = 0;
   double mean_relmse_after_change = 0;  // frames from the change on (all frames when none)
   double gpu_ms = 0;                    // median whole-frame GPU ms; NaN without timestamps
   double mean_relmse_textured = NAN, mean_relmse_untextured = NAN;
+  double mean_relmse_glossy = NAN, mean_relmse_matte = NAN;
+  // Glossy and matte pixels from the change on: reflections that lag behind a moving object or
+  // light (ghosting) raise the first.
+  double glossy_after_change = NAN, matte_after_change = NAN;
   std::vector<std::pair<std::string, double>> pass_ms;  // median per pass, in pass order
   Lag lag;
   EnergyBias energy;
@@ -74,9 +81,13 @@ struct ReportData {
   int crop_zoom = 1;
   std::vector<RunResult> runs;
   std::map<int, CropCell> reference_crops;
+  std::map<int, CropCell> reference_glossy_crops;  // empty: no crops_glossy.png
+  std::string glossy_crop_note;
   // Scenes with albedo textures: the fraction of pixels (over all frames) whose primary surface is
   // textured; 0 without textures (no texture section).
   double textured_fraction = 0;
+  // Scenes with glossy materials: the same fraction for glossy surfaces; 0: no glossy section.
+  double glossy_fraction = 0;
   std::string command_line;
   double wall_seconds = 0;
 };
@@ -108,7 +119,7 @@ std::string report_csv(const ReportData& data);
 // report.md, linking the plots written by write_plots().
 std::string report_markdown(const ReportData& data, const Headline& headline);
 // error_vs_time.png, relmse_per_frame.png, temporal_per_frame.png, ssim_per_frame.png, crops.png,
-// crops_change.png (when the animation changes). Returns the file names written.
+// crops_change.png (when the animation changes), crops_glossy.png (when it changes a glossy scene). Returns the file names written.
 std::vector<std::string> write_plots(const ReportData& data, const Headline& headline,
                                      const std::filesystem::path& dir);
 

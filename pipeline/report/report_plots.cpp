@@ -126,27 +126,30 @@ std::vector<std::string> write_plots(const ReportData& d, const Headline& h, con
   save(draw_plot(per_frame_plot(d, h, "SSIM per frame", "SSIM", &FrameResult::ssim, false)), "ssim_per_frame.png");
 
   // Crops: the reference on top, then every run shown in the per-frame plots.
+  // `reference` and `crops` pick which crops: the default region's or the glossy one's.
+  using Crops = std::map<int, CropCell>;
   auto grid = [&](const std::string& title, const std::vector<const RunResult*>& runs, const std::vector<int>& frames,
-                  const std::string& name) {
+                  const std::string& name, const Crops& reference, Crops RunResult::*crops) {
+    auto cell = [&](const Crops& m, int f) {
+      const auto it = m.find(f);
+      return it != m.end() ? it->second : CropCell{};
+    };
     std::vector<std::string> rows{"reference"}, cols;
     std::vector<std::vector<CropCell>> cells(1);
     for (int f : frames) {
       cols.push_back("frame " + std::to_string(f));
-      const auto it = d.reference_crops.find(f);
-      cells[0].push_back(it != d.reference_crops.end() ? it->second : CropCell{});
+      cells[0].push_back(cell(reference, f));
     }
     for (const RunResult* r : runs) {
       rows.push_back(r->spec.name);
       cells.emplace_back();
-      for (int f : frames) {
-        const auto it = r->crops.find(f);
-        cells.back().push_back(it != r->crops.end() ? it->second : CropCell{});
-      }
+      for (int f : frames) cells.back().push_back(cell(r->*crops, f));
     }
     save(draw_crop_grid(title, rows, cols, cells, d.crop_zoom), name);
   };
   const auto runs = per_frame_runs(d, h);
-  grid("every method beside the reference (" + d.crop_note + ")", runs, d.crop_frames, "crops.png");
+  grid("every method beside the reference (" + d.crop_note + ")", runs, d.crop_frames, "crops.png", d.reference_crops,
+       &RunResult::crops);
   if (d.change) {
     std::vector<const RunResult*> alpha;
     for (const char* n : {"ema-0.05", "svgf", "asvgf"})
@@ -156,7 +159,13 @@ std::vector<std::string> write_plots(const ReportData& d, const Headline& h, con
       frames.push_back(f);
     if (!alpha.empty())
       grid("constant (ema-0.05, svgf) against adaptive (asvgf) alpha while the scene changes (" + d.crop_note + ")",
-           alpha, frames, "crops_change.png");
+           alpha, frames, "crops_change.png", d.reference_crops, &RunResult::crops);
+    std::vector<const RunResult*> glossy;
+    for (const char* n : {"svgf", "asvgf", "asvgf-nodemod"})
+      if (const RunResult* r = find_run(d, n)) glossy.push_back(r);
+    if (!d.reference_glossy_crops.empty() && !glossy.empty())
+      grid("glossy surfaces where the reflections change most (" + d.glossy_crop_note + ")", glossy, frames,
+           "crops_glossy.png", d.reference_glossy_crops, &RunResult::glossy_crops);
   }
   return written;
 }

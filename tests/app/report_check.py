@@ -174,15 +174,25 @@ def scenes(directory, names, runs):
             needle = "](%s/report.md) | %s |" % (name, run)
             if needle not in md:
                 fail("summary.md has no row %r" % needle)
-    if "textured" in names:
-        textured_md = open(os.path.join(directory, "textured", "report.md"), encoding="utf-8").read()
-        header = "| relMSE textured | relMSE untextured |"
-        if header not in textured_md:
-            fail("textured/report.md has no texture table")
-        table = textured_md[textured_md.index(header):].split("\n\n")[0]
-        row = next((line for line in table.splitlines() if line.startswith("| `asvgf` | ")), None)
-        if row is None or not all(finite(cell) for cell in row.split("|")[2:5]):
-            fail("textured/report.md: the asvgf row of the texture table is %r" % row)
+    # The material sections: their table has a finite asvgf row in the scene that has such materials,
+    # and the room (neither) says it has none.
+    sections = [("textured", "| relMSE textured | relMSE untextured |", 3, "has no albedo textures"),
+                ("glossy", "| relMSE glossy | relMSE matte |", 5, "has no glossy materials")]
+    for scene, header, columns, none in sections:
+        if scene in names:
+            md = open(os.path.join(directory, scene, "report.md"), encoding="utf-8").read()
+            if header not in md:
+                fail("%s/report.md has no %s table" % (scene, scene))
+            table = md[md.index(header):].split("\n\n")[0]
+            row = next((line for line in table.splitlines() if line.startswith("| `asvgf` | ")), None)
+            if row is None or not all(finite(cell) for cell in row.split("|")[2:2 + columns]):
+                fail("%s/report.md: the asvgf row of the %s table is %r" % (scene, scene, row))
+    if "glossy" in names:  # light-exit changes the scene: crops where the reflections change most
+        decode_png(os.path.join(directory, "glossy", "crops_glossy.png"))
+        if "cornell" in names:
+            md = open(os.path.join(directory, "cornell", "report.md"), encoding="utf-8").read()
+            if none not in md:
+                fail("cornell/report.md does not say the scene %s" % none)
     print("report_check: ok: %d scenes x %d runs in summary.csv, %d table rows" % (
         len(names), len(runs), len(names) * len(shown)))
 
