@@ -1,5 +1,7 @@
 #include "portability.hpp"
 
+#include <algorithm>
+
 namespace shaderc {
 namespace {
 
@@ -69,6 +71,25 @@ std::vector<std::string> check_portability(const Reflection& r, const std::strin
   if (r.uniform_block_count > 1)
     fail("pass parameters in one uniform block", std::to_string(r.uniform_block_count) + " uniform blocks",
          "the HAL (DispatchDesc::uniforms fills one block)");
+  if (web && r.uniform_block_count == 1 && !r.uniform_structs.empty()) {
+    // WGSL sizes a uniform struct up to its alignment (16 with a vector of 3-4, an array or a struct
+    // inside), and WebGPU refuses a binding smaller than that: the HAL binds the std140 size.
+    const auto& block = r.uniform_structs.back();
+    std::uint32_t align = 4;
+    for (const auto& m : block.members) {
+      if (m.padding) continue;
+      const bool nested = std::any_of(r.uniform_structs.begin(), r.uniform_structs.end() - 1,
+                                      [&](const auto& s) { return s.name == m.type; });
+      const bool pair = m.type.starts_with("std::array<") && m.type.ends_with(", 2>");
+      if (nested || (m.type.starts_with("std::array<") && !pair)) align = 16;
+      else if (pair) align = std::max(align, 8u);
+    }
+    if (r.uniform_block_size % align != 0)
+      fail("a uniform block's size is a multiple of its alignment",
+           std::to_string(r.uniform_block_size) + " bytes, aligned to " + std::to_string(align) +
+               "; pad it with uint members to " + std::to_string((r.uniform_block_size + align - 1) / align * align),
+           "WGSL (the struct rounds up to its alignment and WebGPU refuses the HAL's smaller binding)");
+  }
   for (const auto& name : r.specialization_constants)
     fail("pass parameters in one uniform block", "specialization constant '" + name + "'",
          "the HAL (pipelines take no specializations: use a uniform member or a shader variant)");
