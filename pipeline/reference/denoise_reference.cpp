@@ -239,27 +239,30 @@ ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& d
       double var = std::max(0.0, m1 - m0 * m0);
       if (center.hit() && n > 0 && n < params.min_history) {
         const double lp = luminance(color[0], color[1], color[2]);
-        double sum_c[3] = {0, 0, 0}, sum_m[2] = {0, 0}, sum_w = 0;
+        double sum_c[3] = {0, 0, 0}, sum_m[2] = {0, 0}, sum_w = 0, sum_wm = 0;
         for (int dy = -3; dy <= 3; ++dy)
           for (int dx = -3; dx <= 3; ++dx) {
             const int qx = x + dx, qy = y + dy;
             if (!integrated.inside(qx, qy)) continue;
-            double wgt = 1, mq[2] = {m0, m1};
+            double wgt = 1, w_surface = 1, mq[2] = {m0, m1};
             if (dx != 0 || dy != 0) {
               if (!(moments.at(qx, qy, 2) > 0)) continue;
               mq[0] = moments.at(qx, qy, 0), mq[1] = moments.at(qx, qy, 1);
               const Surface other = surface_at(dn, qx, qy);
               const double dist = std::abs(dx) + std::abs(dy);
-              wgt = weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n) *
-                    weight_luminance(lp, lum_at(integrated, qx, qy), params.sigma_l, 1.0);
+              w_surface = weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n);
+              wgt = w_surface * weight_luminance(lp, lum_at(integrated, qx, qy), params.sigma_l, 1.0);
             }
+            // One frame of history: the moments by depth and normal alone (shaders/denoise/variance.comp).
+            const double wm = n < 1.5 ? w_surface : wgt;
             for (int c = 0; c < 3; ++c) sum_c[c] += wgt * integrated.at(qx, qy, c);
-            sum_m[0] += wgt * mq[0];
-            sum_m[1] += wgt * mq[1];
+            sum_m[0] += wm * mq[0];
+            sum_m[1] += wm * mq[1];
             sum_w += wgt;
+            sum_wm += wm;
           }
         for (int c = 0; c < 3; ++c) color[c] = sum_c[c] / sum_w;
-        m0 = sum_m[0] / sum_w, m1 = sum_m[1] / sum_w;
+        m0 = sum_m[0] / sum_wm, m1 = sum_m[1] / sum_wm;
         var = std::max(0.0, m1 - m0 * m0) * (params.min_history / n);
       }
       for (int c = 0; c < 3; ++c) out.at(x, y, c) = clamp_fp16(color[c]);

@@ -1,7 +1,8 @@
 // variance.comp: per-pixel luminance variance for the a-trous filter (SVGF sec. 4.2). With at
 // least `min_history` frames of history, the temporal estimate max(0, E[l^2] - E[l]^2); with less,
 // a 7x7 edge-aware spatial estimate of the moments (and of the colour), boosted by
-// min_history / n as in Falcor's SVGF. Output: rgb colour, a variance (clamped to fp16 max).
+// min_history / n as in Falcor's SVGF, except that with one frame of history the moments are
+// weighted by depth and normal only (see below). Output: rgb colour, a variance (clamped to fp16 max).
 // The dispatch must use whole 8x8 workgroups (the tile is addressed by workgroup id).
 #version 460
 #extension GL_GOOGLE_include_directive : require
@@ -79,7 +80,7 @@ void main() {
     float lp = luminance(color);
     vec3 sum_c = vec3(0.0);
     vec2 sum_m = vec2(0.0);
-    float sum_w = 0.0;
+    float sum_w = 0.0, sum_wm = 0.0;
     ivec2 local = ivec2(gl_LocalInvocationID.xy) + kRadius;
     for (int dy = -kRadius; dy <= kRadius; ++dy) {
       for (int dx = -kRadius; dx <= kRadius; ++dx) {
@@ -87,7 +88,7 @@ void main() {
         vec4 other_m = tile_moments[t];
         // Outside the image, or (a neighbour) without history: not part of the estimate.
         if (!(other_m.z > 0.0) && (dx != 0 || dy != 0)) continue;
-        float w = 1.0;
+        float w = 1.0, w_surface = 1.0;
         vec4 cq = tile_color[t];
         vec2 mq = m;
         if (dx != 0 || dy != 0) {
@@ -95,17 +96,23 @@ void main() {
           vec4 sq = tile_surface[t];
           Surface other = Surface(sq.x, 0.0, sq.yzw);  // a neighbour's depth gradient is never used
           float dist = float(abs(dx) + abs(dy));
+          w_surface = weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n);
           // No variance yet: the luminance weight uses sigma_l alone (std dev taken as 1).
-          w = weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n) *
-              weight_luminance(lp, cq.a, params.sigma_l, 1.0);
+          w = w_surface * weight_luminance(lp, cq.a, params.sigma_l, 1.0);
         }
         sum_c += w * cq.rgb;
-        sum_m += w * mq;
         sum_w += w;
+        // One frame of history: a pixel's own moments hold no variance (E[l^2] = E[l]^2), so the
+        // estimate is the spread of its neighbours' luminance, which the luminance weight would
+        // cut exactly where it is large: a firefly (l >> sigma_l) would get variance 0 and survive
+        // the a-trous untouched (glossy first frame: relMSE 0.30 against 0.028 at 192x192).
+        float wm = n < 1.5 ? w_surface : w;
+        sum_m += wm * mq;
+        sum_wm += wm;
       }
     }
     color = sum_c / sum_w;
-    m = sum_m / sum_w;
+    m = sum_m / sum_wm;
     variance = max(0.0, m.y - m.x * m.x) * (params.min_history / n);
   }
   if (in_image) imageStore(color_variance, p, clamp_fp16(vec4(color, variance)));

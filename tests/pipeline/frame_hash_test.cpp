@@ -34,8 +34,8 @@ struct Expected {
 const Expected kExpected[] = {
     {frame::Method::Raw, "raw", 0x289b28bc61dbac51ull},
     {frame::Method::Ema, "ema", 0x9f2b8cddf7860f76ull},
-    {frame::Method::Svgf, "svgf", 0x187184597c9b260bull},
-    {frame::Method::Asvgf, "asvgf", 0xc68ab8e12b111957ull},
+    {frame::Method::Svgf, "svgf", 0x7fc2c6690a0f5863ull},
+    {frame::Method::Asvgf, "asvgf", 0xd0608830d62602c0ull},
     {frame::Method::Reference, "reference", 0x2862c6a1cca5a248ull},
 };
 
