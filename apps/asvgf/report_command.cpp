@@ -328,7 +328,7 @@ report::SceneReport report_scene(const ReportOptions& o, const std::vector<repor
       reference_mean[gi] = render::mean_value(img.hdr);
       reference[gi] = std::move(img.hdr);
       d.reference_crops[f] = crop(img.display, d.width, region);
-      if (!glossy.empty()) reference_display[gi] = std::move(img.display);
+      if (!glossy.empty() && d.change) reference_display[gi] = std::move(img.display);
       progress.step(++done, "reference frame " + std::to_string(f));
     }
   }

@@ -236,7 +236,7 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
           << g(r.mean_relmse_glossy / r.mean_relmse_matte) << " | " << g(r.glossy_after_change) << " | "
           << g(r.matte_after_change) << " |\n";
     out << "\n";
-    if (!d.reference_glossy_crops.empty())
+    if (!glossy_crop_runs(d).empty())
       out << "Where the reflections change most (" << d.glossy_crop_note
           << "), the frames around the change:\n\n![glossy crops](crops_glossy.png)\n\n";
   }

@@ -110,6 +110,8 @@ struct Headline {
 Headline compute_headline(const ReportData& data);
 
 const RunResult* find_run(const ReportData& data, const std::string& name);
+// The runs crops_glossy.png shows (svgf, asvgf, asvgf-nodemod, those present); none: no such plot.
+std::vector<const RunResult*> glossy_crop_runs(const ReportData& data);
 
 // Every pass any run timed, in execution order (the run with the most passes sets it).
 std::vector<std::string> pass_columns(const ReportData& data);
@@ -119,7 +121,8 @@ std::string report_csv(const ReportData& data);
 // report.md, linking the plots written by write_plots().
 std::string report_markdown(const ReportData& data, const Headline& headline);
 // error_vs_time.png, relmse_per_frame.png, temporal_per_frame.png, ssim_per_frame.png, crops.png,
-// crops_change.png (when the animation changes), crops_glossy.png (when it changes a glossy scene). Returns the file names written.
+// crops_change.png (when the animation changes), crops_glossy.png (when it changes a glossy scene).
+// Returns the file names written.
 std::vector<std::string> write_plots(const ReportData& data, const Headline& headline,
                                      const std::filesystem::path& dir);
 

@@ -160,10 +160,7 @@ std::vector<std::string> write_plots(const ReportData& d, const Headline& h, con
     if (!alpha.empty())
       grid("constant (ema-0.05, svgf) against adaptive (asvgf) alpha while the scene changes (" + d.crop_note + ")",
            alpha, frames, "crops_change.png", d.reference_crops, &RunResult::crops);
-    std::vector<const RunResult*> glossy;
-    for (const char* n : {"svgf", "asvgf", "asvgf-nodemod"})
-      if (const RunResult* r = find_run(d, n)) glossy.push_back(r);
-    if (!d.reference_glossy_crops.empty() && !glossy.empty())
+    if (const auto glossy = glossy_crop_runs(d); !glossy.empty())
       grid("glossy surfaces where the reflections change most (" + d.glossy_crop_note + ")", glossy, frames,
            "crops_glossy.png", d.reference_glossy_crops, &RunResult::glossy_crops);
   }
