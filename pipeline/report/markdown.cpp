@@ -167,7 +167,8 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
         out << "- `" << r->spec.name << "`: steady relMSE before the change " << g(r->lag.steady_error)
             << ", threshold " << g(r->lag.threshold) << ", peak after it " << g(r->lag.peak_error) << ", lag "
             << lag_text(r->lag, d.frames) << " frames.\n";
-    out << "\n![crops while the scene changes](crops_change.png)\n\n";
+    out << "\n";
+    if (!change_crop_runs(d).empty()) out << "![crops while the scene changes](crops_change.png)\n\n";
   }
 
   out << "### A-SVGF without the renderer's help\n\n";

@@ -76,6 +76,14 @@ const RunResult* find_run(const ReportData& data, const std::string& name) {
   return nullptr;
 }
 
+std::vector<const RunResult*> change_crop_runs(const ReportData& data) {
+  std::vector<const RunResult*> runs;
+  if (!data.change) return runs;
+  for (const char* name : {"ema-0.05", "svgf", "asvgf"})
+    if (const RunResult* r = find_run(data, name)) runs.push_back(r);
+  return runs;
+}
+
 std::vector<const RunResult*> glossy_crop_runs(const ReportData& data) {
   std::vector<const RunResult*> runs;
   if (data.reference_glossy_crops.empty()) return runs;

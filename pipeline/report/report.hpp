@@ -110,6 +110,8 @@ struct Headline {
 Headline compute_headline(const ReportData& data);
 
 const RunResult* find_run(const ReportData& data, const std::string& name);
+// The runs crops_change.png shows (ema-0.05, svgf, asvgf, those present; none without a change).
+std::vector<const RunResult*> change_crop_runs(const ReportData& data);
 // The runs crops_glossy.png shows (svgf, asvgf, asvgf-nodemod, those present); none: no such plot.
 std::vector<const RunResult*> glossy_crop_runs(const ReportData& data);
 

@@ -151,9 +151,7 @@ std::vector<std::string> write_plots(const ReportData& d, const Headline& h, con
   grid("every method beside the reference (" + d.crop_note + ")", runs, d.crop_frames, "crops.png", d.reference_crops,
        &RunResult::crops);
   if (d.change) {
-    std::vector<const RunResult*> alpha;
-    for (const char* n : {"ema-0.05", "svgf", "asvgf"})
-      if (const RunResult* r = find_run(d, n)) alpha.push_back(r);
+    const auto alpha = change_crop_runs(d);
     std::vector<int> frames;
     for (int f = std::max(0, d.change->first - 1); f <= std::min(d.frames - 1, d.change->last + 3); ++f)
       frames.push_back(f);
