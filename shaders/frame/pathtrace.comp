@@ -167,6 +167,10 @@ vec3 sample_light(vec3 x, vec3 n, uint self, Vertex vertex, inout uint state) {
     f_cos = glossy_f_cos(vertex.model, vertex.v, vec3(dot(dir, vertex.t), dot(dir, vertex.b), cos_x), pdf_bsdf);
     if (pdf_bsdf <= 0.0) return vec3(0.0);
   }
+  // A sphere light in front of a triangle light occludes it, as a BSDF-sampled path would find.
+  float t_sphere;
+  if (l.type != 0u && hit_sphere_lights(x, dir, 0.0, dist * kShadowEnd, params.sphere_count, t_sphere) >= 0)
+    return vec3(0.0);
   rays_traced += 1u;
   if (trace_any(x, dir, 0.0, dist * kShadowEnd, self)) return vec3(0.0);
   float w = power_heuristic(pdf_light, pdf_bsdf);

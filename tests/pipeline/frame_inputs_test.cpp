@@ -137,6 +137,52 @@ TEST_CASE("a diffuse plane lit by a sphere light matches the analytic irradiance
   CHECK(worst_rel < 0.08);
 }
 
+TEST_CASE("a sphere light between a point and an emissive triangle shades it: the triangle's light sample is occluded") {
+  ValidatedDevice device;
+  scene::Mesh m;
+  m.name = "floor and lamp";
+  const float e = 4.0f, q = 0.25f;
+  add_quad(m, {-e, 0, -e}, {-e, 0, e}, {e, 0, e}, {e, 0, -e}, 0);   // floor, facing up
+  add_quad(m, {-q, 2, -q}, {q, 2, -q}, {q, 2, q}, {-q, 2, q}, 1);   // emissive quad at y = 2, facing down
+  scene::Material grey, lamp;
+  grey.name = "grey";
+  grey.albedo = glm::vec3(0.5f);
+  lamp.name = "lamp";
+  lamp.albedo = glm::vec3(0.0f);
+  lamp.emission = glm::vec3(20.0f);
+  auto scene = one_mesh_scene(m, {grey, lamp}, {{0, 0.35f, 1.2f}, {0, 0, 0}, {0, 1, 0}, 50.0f});
+  // A black sphere light (no power: never sampled) between the floor around the origin and the quad:
+  // seen from |x|, |z| < 0.15 on the floor it covers the whole quad (cone half-angle 37 degrees).
+  scene.sphere_lights.push_back({"blocker", {{0.0f, {{0.0f, 1.0f, 0.0f}, 0.6f, glm::vec3(0.0f)}}}});
+  scene::validate(scene, "sphere between floor and lamp");
+
+  const std::uint32_t w = 32, h = 32, spp = 64;
+  const FrameInputs in =
+      render_frame_inputs(*device, scene, device->capabilities().ray_query, w, h, 0, spp, /*max_bounces=*/1);
+  const auto cam = render::make_camera(scene.camera[0].value, w, h);
+  int shaded = 0, lit = 0;
+  for (std::uint32_t y = 0; y < h; ++y)
+    for (std::uint32_t x = 0; x < w; ++x) {
+      const std::size_t p = std::size_t(y) * w + x;
+      if (in.visibility[4 * p] != 1u) continue;  // pixels that see the floor
+      const glm::vec2 ndc{2.0f * (x + 0.5f) / w - 1.0f, 1.0f - 2.0f * (y + 0.5f) / h};
+      const glm::vec3 d =
+          glm::normalize(glm::vec3(cam.forward) + ndc.x * glm::vec3(cam.right) + ndc.y * glm::vec3(cam.up));
+      const glm::vec3 o = glm::vec3(cam.position);
+      const glm::vec3 xw = o + d * (-o.y / d.y);
+      if (std::abs(xw.x) < 0.15f && std::abs(xw.z) < 0.15f) {
+        // Every path from here to the quad meets the sphere first: nothing reaches it, exactly.
+        CHECK_MESSAGE(in.illumination[4 * p] == 0.0f, "pixel (" << x << "," << y << ") at (" << xw.x << ", " << xw.z
+                                                                  << ") sees the occluded quad: " << in.illumination[4 * p]);
+        ++shaded;
+      } else if (std::abs(xw.x) > 2.0f && in.illumination[4 * p] > 0.0f) {
+        ++lit;  // far out the quad shows beside the sphere
+      }
+    }
+  CHECK(shaded >= 4);
+  CHECK(lit > 0);
+}
+
 namespace {
 
 // The furnace cube with a glossy floor and black emitting walls (albedo 0): the floor sees unit
