@@ -31,7 +31,7 @@ int blas_builds(const std::string& animation, int frames) {
 }  // namespace
 
 TEST_CASE("scene update: a camera path or a moving light keeps the BLAS, moving boxes rebuild it") {
-  CHECK(blas_builds("orbit", 8) == 1);       // built once, at the first update
+  CHECK(blas_builds("orbit", 8) == 1);  // built once, at the first update
   CHECK(blas_builds("light-exit", 12) == 1);
   CHECK(blas_builds("boxes-move", 12) > 2);  // every frame a box moves
 }
