@@ -276,10 +276,12 @@ report::SceneReport report_scene(const ReportOptions& o, const std::vector<repor
   std::erase_if(stored, [&](int f) { return f < 0 || f >= frames; });
   const CropRegion region = crop_region(d.width, d.height);
   d.crop_zoom = std::max(1, int(std::lround(192.0 / std::max(region.w, region.h))));
-  d.crop_note = region.w == d.width && region.h == d.height
-                    ? "whole image, " + std::to_string(d.crop_zoom) + "x"
-                    : std::to_string(region.w) + "x" + std::to_string(region.h) + " crop at (" +
-                          std::to_string(region.x) + "," + std::to_string(region.y) + ")";
+  auto region_note = [&](const CropRegion& r) {
+    return r.w == d.width && r.h == d.height ? "whole image, " + std::to_string(d.crop_zoom) + "x"
+                                             : std::to_string(r.w) + "x" + std::to_string(r.h) + " crop at (" +
+                                                   std::to_string(r.x) + "," + std::to_string(r.y) + ")";
+  };
+  d.crop_note = region_note(region);
 
   Progress progress("report", d.reference_renders + int(specs.size()) * frames, o.quiet);
   int done = 0;
@@ -347,14 +349,12 @@ report::SceneReport report_scene(const ReportOptions& o, const std::vector<repor
     glossy_region = most_changed_region(reference[std::size_t(group[std::size_t(before)])],
                                         reference[std::size_t(group[std::size_t(after)])], glossy[std::size_t(after)],
                                         d.width, d.height, region);
-    d.glossy_crop_note = std::to_string(glossy_region->w) + "x" + std::to_string(glossy_region->h) + " crop at (" +
-                         std::to_string(glossy_region->x) + "," + std::to_string(glossy_region->y) + ")";
+    d.glossy_crop_note = region_note(*glossy_region);
     for (int f : stored)
       d.reference_glossy_crops[f] =
           crop(reference_display[std::size_t(group[std::size_t(f)])], d.width, *glossy_region);
   }
   reference_display.clear();
-
 
   for (const auto& spec : specs) {
     render::RenderSettings s = base;

@@ -250,7 +250,8 @@ ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& d
               mq[0] = moments.at(qx, qy, 0), mq[1] = moments.at(qx, qy, 1);
               const Surface other = surface_at(dn, qx, qy);
               const double dist = std::abs(dx) + std::abs(dy);
-              w_surface = weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n);
+              w_surface =
+                  weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n);
               wgt = w_surface * weight_luminance(lp, lum_at(integrated, qx, qy), params.sigma_l, 1.0);
             }
             // One frame of history: the moments by depth and normal alone (shaders/denoise/variance.comp).

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <sstream>
 
 namespace asvgf::report {
@@ -57,7 +58,8 @@ void summarise(RunResult& run, std::optional<ChangeWindow> change) {
   std::vector<double> glossy, matte, glossy_after, matte_after;
   for (const auto& f : run.frames) {
     glossy.push_back(f.relmse_glossy), matte.push_back(f.relmse_matte);
-    if (!change || f.frame >= change->first) glossy_after.push_back(f.relmse_glossy), matte_after.push_back(f.relmse_matte);
+    if (!change || f.frame >= change->first)
+      glossy_after.push_back(f.relmse_glossy), matte_after.push_back(f.relmse_matte);
   }
   run.mean_relmse_glossy = mean(glossy);
   run.mean_relmse_matte = mean(matte);
@@ -76,20 +78,24 @@ const RunResult* find_run(const ReportData& data, const std::string& name) {
   return nullptr;
 }
 
-std::vector<const RunResult*> change_crop_runs(const ReportData& data) {
+namespace {
+// The runs of `names` that are present, in that order.
+std::vector<const RunResult*> runs_named(const ReportData& data, std::initializer_list<const char*> names) {
   std::vector<const RunResult*> runs;
-  if (!data.change) return runs;
-  for (const char* name : {"ema-0.05", "svgf", "asvgf"})
+  for (const char* name : names)
     if (const RunResult* r = find_run(data, name)) runs.push_back(r);
   return runs;
 }
+}  // namespace
+
+std::vector<const RunResult*> change_crop_runs(const ReportData& data) {
+  if (!data.change) return {};
+  return runs_named(data, {"ema-0.05", "svgf", "asvgf"});
+}
 
 std::vector<const RunResult*> glossy_crop_runs(const ReportData& data) {
-  std::vector<const RunResult*> runs;
-  if (data.reference_glossy_crops.empty()) return runs;
-  for (const char* name : {"svgf", "asvgf", "asvgf-nodemod"})
-    if (const RunResult* r = find_run(data, name)) runs.push_back(r);
-  return runs;
+  if (data.reference_glossy_crops.empty()) return {};
+  return runs_named(data, {"svgf", "asvgf", "asvgf-nodemod"});
 }
 
 Headline compute_headline(const ReportData& data) {

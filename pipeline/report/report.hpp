@@ -48,7 +48,7 @@ struct FrameResult {
 struct RunResult {
   RunSpec spec;
   std::vector<FrameResult> frames;
-  std::map<int, CropCell> crops;  // display-image crops of the frames the report shows
+  std::map<int, CropCell> crops;         // display-image crops of the frames the report shows
   std::map<int, CropCell> glossy_crops;  // the same frames where reflections change most (glossy scenes)
   // Filled by summarise():
   double mean_relmse = 0, mean_ssim = 0, mean_temporal = 0;

@@ -119,10 +119,10 @@ TEST_CASE("conformance: the BVH ray/box test reports a miss at every tmax, also 
     cases.push_back({0.0f, tmax, {-1, -1, 2}, {1, 1, 3}, 2.0f});     // ahead: entered at z = 2
     cases.push_back({0.0f, tmax, {-1, -1, -1}, {1, 1, 1}, 0.0f});    // around the origin: entered at tmin
   }
-  cases.push_back({0.0f, 1.5f, {-1, -1, 2}, {1, 1, 3}, -1.0f});  // ahead but past tmax
-  cases.push_back({0.0f, 2.0f, {-1, -1, 2}, {1, 1, 3}, 2.0f});   // entered exactly at tmax: kept (ties)
-  cases.push_back({2.5f, 1e30f, {-1, -1, 2}, {1, 1, 3}, 2.5f});  // tmin inside the box
-  cases.push_back({3.5f, 1e30f, {-1, -1, 2}, {1, 1, 3}, -1.0f}); // tmin past the box
+  cases.push_back({0.0f, 1.5f, {-1, -1, 2}, {1, 1, 3}, -1.0f});   // ahead but past tmax
+  cases.push_back({0.0f, 2.0f, {-1, -1, 2}, {1, 1, 3}, 2.0f});    // entered exactly at tmax: kept (ties)
+  cases.push_back({2.5f, 1e30f, {-1, -1, 2}, {1, 1, 3}, 2.5f});   // tmin inside the box
+  cases.push_back({3.5f, 1e30f, {-1, -1, 2}, {1, 1, 3}, -1.0f});  // tmin past the box
 
   std::vector<float> input;
   for (const Case& c : cases) {
@@ -132,8 +132,8 @@ TEST_CASE("conformance: the BVH ray/box test reports a miss at every tmax, also 
   for_each_backend([&](hal::Device& device) {
     const hal::ShaderInfo& shader = asvgf::shaders::hal_test_box_entry;
     const auto count = static_cast<std::uint32_t>(cases.size());
-    const auto src = device.create_buffer(
-        {"box cases", input.size() * 4, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst});
+    const auto src =
+        device.create_buffer({"box cases", input.size() * 4, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst});
     const auto dst =
         device.create_buffer({"box entries", count * 4, hal::BufferUsage::Storage | hal::BufferUsage::CopySrc});
     device.upload_buffer(src, 0, as_bytes(input));

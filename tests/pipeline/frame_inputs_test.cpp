@@ -137,13 +137,14 @@ TEST_CASE("a diffuse plane lit by a sphere light matches the analytic irradiance
   CHECK(worst_rel < 0.08);
 }
 
-TEST_CASE("a sphere light between a point and an emissive triangle shades it: the triangle's light sample is occluded") {
+TEST_CASE(
+    "a sphere light between a point and an emissive triangle shades it: the triangle's light sample is occluded") {
   ValidatedDevice device;
   scene::Mesh m;
   m.name = "floor and lamp";
   const float e = 4.0f, q = 0.25f;
-  add_quad(m, {-e, 0, -e}, {-e, 0, e}, {e, 0, e}, {e, 0, -e}, 0);   // floor, facing up
-  add_quad(m, {-q, 2, -q}, {q, 2, -q}, {q, 2, q}, {-q, 2, q}, 1);   // emissive quad at y = 2, facing down
+  add_quad(m, {-e, 0, -e}, {-e, 0, e}, {e, 0, e}, {e, 0, -e}, 0);  // floor, facing up
+  add_quad(m, {-q, 2, -q}, {q, 2, -q}, {q, 2, q}, {-q, 2, q}, 1);  // emissive quad at y = 2, facing down
   scene::Material grey, lamp;
   grey.name = "grey";
   grey.albedo = glm::vec3(0.5f);
@@ -172,8 +173,9 @@ TEST_CASE("a sphere light between a point and an emissive triangle shades it: th
       const glm::vec3 xw = o + d * (-o.y / d.y);
       if (std::abs(xw.x) < 0.15f && std::abs(xw.z) < 0.15f) {
         // Every path from here to the quad meets the sphere first: nothing reaches it, exactly.
-        CHECK_MESSAGE(in.illumination[4 * p] == 0.0f, "pixel (" << x << "," << y << ") at (" << xw.x << ", " << xw.z
-                                                                  << ") sees the occluded quad: " << in.illumination[4 * p]);
+        CHECK_MESSAGE(in.illumination[4 * p] == 0.0f, "pixel ("
+                                                          << x << "," << y << ") at (" << xw.x << ", " << xw.z
+                                                          << ") sees the occluded quad: " << in.illumination[4 * p]);
         ++shaded;
       } else if (std::abs(xw.x) > 2.0f && in.illumination[4 * p] > 0.0f) {
         ++lit;  // far out the quad shows beside the sphere

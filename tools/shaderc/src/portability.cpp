@@ -72,17 +72,20 @@ std::vector<std::string> check_portability(const Reflection& r, const std::strin
     fail("pass parameters in one uniform block", std::to_string(r.uniform_block_count) + " uniform blocks",
          "the HAL (DispatchDesc::uniforms fills one block)");
   if (web && r.uniform_block_count == 1 && !r.uniform_structs.empty()) {
-    // WGSL sizes a uniform struct up to its alignment (16 with a vector of 3-4, an array or a struct
-    // inside), and WebGPU refuses a binding smaller than that: the HAL binds the std140 size.
+    // WGSL sizes a uniform struct up to its alignment (16 with a vec3/vec4 or a struct inside), and
+    // WebGPU refuses a binding smaller than that: the HAL binds the std140 size.
     const auto& block = r.uniform_structs.back();
     std::uint32_t align = 4;
     for (const auto& m : block.members) {
       if (m.padding) continue;
       const bool nested = std::any_of(r.uniform_structs.begin(), r.uniform_structs.end() - 1,
                                       [&](const auto& s) { return s.name == m.type; });
-      const bool pair = m.type.starts_with("std::array<") && m.type.ends_with(", 2>");
-      if (nested || (m.type.starts_with("std::array<") && !pair)) align = 16;
-      else if (pair) align = std::max(align, 8u);
+      const bool vector = m.type.starts_with("std::array<");  // arrays and matrices are refused earlier
+      const bool pair = vector && m.type.ends_with(", 2>");
+      if (nested || (vector && !pair))
+        align = 16;
+      else if (pair)
+        align = std::max(align, 8u);
     }
     if (r.uniform_block_size % align != 0)
       fail("a uniform block's size is a multiple of its alignment",
