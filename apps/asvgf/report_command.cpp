@@ -96,6 +96,8 @@ std::vector<report::RunSpec> all_runs(std::uint32_t max_accumulation_spp) {
       [](report::RunSpec& s) { s.denoise.gradient_source = passes::GradientSource::Reprojected; });
   add("asvgf-nodemod", "A-SVGF filtering radiance with the albedo in it (--no-demodulation)", Method::Asvgf,
       [](report::RunSpec& s) { s.demodulate = false; });
+  add("asvgf-onesignal", "A-SVGF filtering diffuse and specular light as one signal (--no-specular-split)",
+      Method::Asvgf, [](report::RunSpec& s) { s.specular_split = false; });
   add("asvgf-box9", "A-SVGF, the seed's 3x3 box kernel, 9 iterations", Method::Asvgf, [](report::RunSpec& s) {
     s.denoise.kernel = passes::AtrousKernel::Box;
     s.denoise.atrous_iterations = 9;
@@ -231,10 +233,13 @@ std::vector<std::vector<std::uint8_t>> material_masks(hal::Device& device, const
 }
 
 // One scene's report, written to `dir` (report.md, report.csv, plots).
-report::SceneReport report_scene(const ReportOptions& o, const std::vector<report::RunSpec>& specs, hal::Device& device,
+report::SceneReport report_scene(const ReportOptions& o, std::vector<report::RunSpec> specs, hal::Device& device,
                                  const std::filesystem::path& dir) {
   const auto start = std::chrono::steady_clock::now();
   const scene::Scene scene = load_scene(o.scene);
+  // Without glossy materials there is one signal anyway: a one-signal run would repeat its twin.
+  if (std::none_of(scene.materials.begin(), scene.materials.end(), [](const auto& m) { return m.glossy(); }))
+    std::erase_if(specs, [](const report::RunSpec& s) { return !s.specular_split; });
   const int frames = o.frames > 0 ? o.frames : scene.frame_count;
   const render::RenderSettings base = render_settings(o.scene);
 
@@ -362,6 +367,7 @@ report::SceneReport report_scene(const ReportOptions& o, const std::vector<repor
     s.spp = spec.spp;
     s.denoise = spec.denoise;
     s.demodulate = spec.demodulate;
+    s.specular_split = spec.specular_split;
     render::Renderer renderer(device, scene, s);
     report::RunResult run;
     run.spec = spec;

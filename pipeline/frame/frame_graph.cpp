@@ -61,8 +61,19 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   // Transient.
   const ResourceId motion = g.add_image("motion", w, h, F::RGBA32F);  // xy used
   const ResourceId albedo = g.add_image("albedo", w, h, F::RGBA16F);
+  // Two signals only where a second chain has something to filter and every consumer of the
+  // illumination knows the split: the reprojected gradient and the AOVs read one signal.
+  const bool split = s.specular_split && scene_gpu.glossy() &&
+                     (s.method == Method::Ema || s.method == Method::Svgf || s.method == Method::Asvgf) &&
+                     !(s.method == Method::Asvgf && denoise.gradient_source == passes::GradientSource::Reprojected) &&
+                     !targets.aovs;
+  std::optional<ResourceId> specular, specular_albedo;
+  if (split) {
+    specular = g.add_image("specular", w, h, F::RGBA32F);
+    specular_albedo = g.add_image("specular_albedo", w, h, F::RGBA16F);
+  }
 
-  passes::add_gbuffer(g, pipelines_, scene, {vbuffer, depth_normal, motion, albedo}, w, h, s.demodulate);
+  passes::add_gbuffer(g, pipelines_, scene, {vbuffer, depth_normal, motion, albedo, split}, w, h, s.demodulate);
 
   // A-SVGF's temporal gradient: forward-projected samples, then delta and Delta at 1/3 resolution.
   const std::string not_moved = "nothing in the scene, camera or lights moved since the last frame";
@@ -75,12 +86,14 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
     gradient_seeds = g.add_image("gradient_seeds", w, h, F::RGBA32Uint);
     gradient_prev = g.add_image("gradient_prev_luminance", gw, gh, F::RGBA32F);  // xy used
     const ResourceId claims = g.add_buffer("gradient_claims", std::uint64_t(gw) * gh * 4);
-    passes::add_gradient_select(g, pipelines_, scene,
-                                {vbuffer, seeds, illumination, depth_normal, claims, *gradient_seeds, gradient_prev},
-                                s.frame, w, h, gradients ? "" : not_moved);
+    passes::add_gradient_select(
+        g, pipelines_, scene,
+        {vbuffer, seeds, illumination, depth_normal, claims, *gradient_seeds, gradient_prev, split}, s.frame, w, h,
+        gradients ? "" : not_moved);
   }
   passes::add_pathtrace(g, pipelines_, scene, vbuffer, gradients ? gradient_seeds : std::nullopt, illumination, seeds,
-                        rays, {s.frame, s.seed, s.max_bounces, s.spp, s.demodulate}, w, h);
+                        rays, {s.frame, s.seed, s.max_bounces, s.spp, s.demodulate}, w, h, "pathtrace",
+                        split ? std::optional(passes::SpecularTargets{*specular, *specular_albedo}) : std::nullopt);
   ResourceId input = illumination;
   if (s.method == Method::Reference) {
     const ResourceId accumulation = g.add_image("accumulation", w, h, F::RGBA32F, Lifetime::Persistent);
@@ -90,11 +103,11 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const passes::Filter filter = s.method == Method::Raw || s.method == Method::Reference ? passes::Filter::None
                                 : s.method == Method::Ema                                ? passes::Filter::Temporal
                                                           : passes::Filter::Spatiotemporal;
-  const passes::DenoiserOutputs denoised =
-      passes::add_denoiser(g, pipelines_,
-                           {input, motion, depth_normal, albedo, counters, hdr, display,
-                            adaptive ? std::optional(gradient_prev) : std::nullopt, gradients ? "" : not_moved},
-                           denoise, filter);
+  const passes::DenoiserOutputs denoised = passes::add_denoiser(
+      g, pipelines_,
+      {input, motion, depth_normal, albedo, counters, hdr, display,
+       adaptive ? std::optional(gradient_prev) : std::nullopt, gradients ? "" : not_moved, specular, specular_albedo},
+      denoise, filter);
   g.output(hdr, hal::State::CopySrc);
   g.output(display, hal::State::CopySrc);
 

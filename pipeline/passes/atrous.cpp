@@ -25,8 +25,8 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
   if (r.color_history) bindings.push_back({"color_history", *r.color_history});
   const hal::ShaderInfo& shader = r.color_history ? asvgf::shaders::atrous_history : asvgf::shaders::atrous_plain;
   const auto pipeline = pipelines.get<Uniforms>(shader);
-  return add_compute_pass(graph, "atrous." + std::to_string(iteration + 1), shader, pipeline, std::move(bindings),
-                          to_bytes(u), {u.width, u.height, 1});
+  return add_compute_pass(graph, r.prefix + "atrous." + std::to_string(iteration + 1), shader, pipeline,
+                          std::move(bindings), to_bytes(u), {u.width, u.height, 1});
 }
 
 }  // namespace asvgf::passes

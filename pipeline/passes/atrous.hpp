@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "graph/render_graph.hpp"
 #include "passes/compute_pass.hpp"
@@ -15,8 +16,9 @@ struct AtrousResources {
   graph::ResourceId depth_normal = 0;              // read: RGBA32F
   graph::ResourceId color_out = 0;                 // written: RGBA16F (rgb, variance)
   std::optional<graph::ResourceId> color_history;  // also written (persistent RGBA16F) at the history tap
+  std::string prefix;                              // of the pass name: "specular." for the second signal
 };
-// Adds "atrous.<iteration + 1>" with step 2^iteration and the settings' kernel and sigmas.
+// Adds "<prefix>atrous.<iteration + 1>" with step 2^iteration and the settings' kernel and sigmas.
 graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
                               int iteration, const DenoiseSettings& settings);
 

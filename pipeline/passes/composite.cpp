@@ -2,13 +2,14 @@
 
 #include <cstddef>
 
-#include "shaders/composite.hpp"
+#include "shaders/composite.one.hpp"
+#include "shaders/composite.split.hpp"
 
 namespace asvgf::passes {
 namespace {
 
 // The shader's uniform block, as the shader tool generated it.
-using Uniforms = asvgf::shaders::composite_uniforms::Params;
+using Uniforms = asvgf::shaders::composite_one_uniforms::Params;
 
 }  // namespace
 
@@ -16,15 +17,18 @@ graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipel
                                  const DenoiseSettings& s) {
   const auto& decl = graph.resource(r.hdr);
   const Uniforms u{decl.width, decl.height, s.exposure, static_cast<std::uint32_t>(s.tonemap)};
-  const hal::ShaderInfo& shader = asvgf::shaders::composite;
+  const bool split = r.specular.has_value();
+  const hal::ShaderInfo& shader = split ? asvgf::shaders::composite_split : asvgf::shaders::composite_one;
   const auto pipeline = pipelines.get<Uniforms>(shader);
-  return add_compute_pass(graph, "composite", shader, pipeline,
-                          {{"illumination", r.illumination},
-                           {"albedo", r.albedo},
-                           {"hdr", r.hdr},
-                           {"display", r.display},
-                           {"counters", r.counters}},
-                          to_bytes(u), {u.width, u.height, 1});
+  std::vector<Binding> bindings{{"illumination", r.illumination},
+                                {"albedo", r.albedo},
+                                {"hdr", r.hdr},
+                                {"display", r.display},
+                                {"counters", r.counters}};
+  if (split)
+    bindings.insert(bindings.end(), {{"specular", *r.specular}, {"specular_albedo", r.specular_albedo.value()}});
+  return add_compute_pass(graph, "composite", shader, pipeline, std::move(bindings), to_bytes(u),
+                          {u.width, u.height, 1});
 }
 
 }  // namespace asvgf::passes

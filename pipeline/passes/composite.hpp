@@ -2,6 +2,8 @@
 // albedo and writes HDR radiance (RGBA32F) and the tonemapped sRGB display image (RGBA8).
 #pragma once
 
+#include <optional>
+
 #include "graph/render_graph.hpp"
 #include "passes/compute_pass.hpp"
 #include "passes/denoise_settings.hpp"
@@ -14,6 +16,8 @@ struct CompositeResources {
   graph::ResourceId hdr = 0;           // written: RGBA32F
   graph::ResourceId display = 0;       // written: RGBA8Unorm, sRGB-encoded
   graph::ResourceId counters = 0;      // read-written SanitizeCounters buffer: zeroed outputs
+  // The filtered specular signal and its albedo, added (pathtrace's split signals).
+  std::optional<graph::ResourceId> specular, specular_albedo;
 };
 // Adds "composite" (settings.exposure, settings.tonemap).
 graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipelines, const CompositeResources& r,

@@ -1,5 +1,6 @@
 #include "passes/denoiser.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "passes/atrous.hpp"
@@ -10,6 +11,50 @@
 #include "passes/variance.hpp"
 
 namespace asvgf::passes {
+
+namespace {
+
+// One signal's temporal filter (and variance and a-trous iterations for Spatiotemporal), with its
+// histories; resources and passes are named with `prefix`.
+struct Chain {
+  graph::ResourceId filtered = 0, moments = 0, integrated = 0, variance = 0, color_history = 0;
+};
+Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId signal,
+                const std::string& prefix, const DenoiserInputs& in, std::optional<graph::ResourceId> gradient,
+                const DenoiseSettings& s, Filter filter) {
+  using F = hal::Format;
+  using graph::Lifetime;
+  using graph::ResourceId;
+  const auto& decl = graph.resource(signal);
+  const std::uint32_t w = decl.width, h = decl.height;
+  Chain c;
+  c.color_history = graph.add_image(prefix + "color_history", w, h, F::RGBA16F, Lifetime::Persistent);
+  c.moments = graph.add_image(prefix + "moments", w, h, F::RGBA32F, Lifetime::Persistent);
+  const bool spatial = filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
+  // Without a spatial filter the temporal result is itself next frame's colour history.
+  c.integrated = spatial ? graph.add_image(prefix + "integrated", w, h, F::RGBA16F) : c.color_history;
+  add_temporal(
+      graph, pipelines,
+      {signal, in.motion, in.depth_normal, c.color_history, c.moments, c.integrated, in.counters, gradient, prefix}, s);
+  c.filtered = c.integrated;
+  c.variance = c.integrated;
+  if (!spatial) return c;
+  ResourceId current = graph.add_image(prefix + "color_variance", w, h, F::RGBA16F);
+  c.variance = current;
+  add_variance(graph, pipelines, {c.integrated, c.moments, in.depth_normal, current, prefix}, s);
+  for (int i = 0; i < s.atrous_iterations; ++i) {
+    const ResourceId next = graph.add_image(prefix + "atrous." + std::to_string(i + 1), w, h, F::RGBA16F);
+    add_atrous(
+        graph, pipelines,
+        {current, in.depth_normal, next, i == s.history_tap ? std::optional(c.color_history) : std::nullopt, prefix}, i,
+        s);
+    current = next;
+  }
+  c.filtered = current;
+  return c;
+}
+
+}  // namespace
 
 DenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipelines, const DenoiserInputs& in,
                              const DenoiseSettings& s, Filter filter) {
@@ -33,7 +78,7 @@ DenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipelines
       const ResourceId luminance = graph.add_image("noisy_luminance", w, h, F::R32F, Lifetime::Persistent);
       add_gradient_reprojected(graph, pipelines, {in.illumination, in.motion, in.depth_normal, luminance, current});
     } else {
-      add_gradient(graph, pipelines, {in.illumination, *in.gradient_prev, current})
+      add_gradient(graph, pipelines, {in.illumination, *in.gradient_prev, current, in.specular.has_value()})
           .skip_if(skip, in.gradient_skip_reason);
     }
     for (int i = 0; i < s.gradient_iterations; ++i) {
@@ -46,36 +91,27 @@ DenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipelines
   }
 
   if (filter != Filter::None) {
-    const ResourceId color_history = graph.add_image("color_history", w, h, F::RGBA16F, Lifetime::Persistent);
-    const ResourceId moments = graph.add_image("moments", w, h, F::RGBA32F, Lifetime::Persistent);
-    const bool spatial = filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
-    // Without a spatial filter the temporal result is itself next frame's colour history.
-    const ResourceId integrated = spatial ? graph.add_image("integrated", w, h, F::RGBA16F) : color_history;
-    add_temporal(
-        graph, pipelines,
-        {in.illumination, in.motion, in.depth_normal, color_history, moments, integrated, in.counters, out.gradient},
-        s);
-    out.filtered = integrated;
-    out.moments = moments;
-    out.integrated = integrated;
-    out.variance = integrated;
-    out.color_history = color_history;
-    if (spatial) {
-      ResourceId current = graph.add_image("color_variance", w, h, F::RGBA16F);
-      out.variance = current;
-      add_variance(graph, pipelines, {integrated, moments, in.depth_normal, current}, s);
-      for (int i = 0; i < s.atrous_iterations; ++i) {
-        const ResourceId next = graph.add_image("atrous." + std::to_string(i + 1), w, h, F::RGBA16F);
-        add_atrous(graph, pipelines,
-                   {current, in.depth_normal, next, i == s.history_tap ? std::optional(color_history) : std::nullopt},
-                   i, s);
-        current = next;
-      }
-      out.filtered = current;
+    const Chain diffuse = add_chain(graph, pipelines, in.illumination, "", in, out.gradient, s, filter);
+    out.filtered = diffuse.filtered;
+    out.moments = diffuse.moments;
+    out.integrated = diffuse.integrated;
+    out.variance = diffuse.variance;
+    out.color_history = diffuse.color_history;
+    if (in.specular) {
+      DenoiseSettings specular = s;
+      specular.atrous_iterations = s.specular_atrous_iterations;
+      specular.history_tap = std::min(s.history_tap, std::max(0, s.specular_atrous_iterations - 1));
+      out.specular =
+          add_chain(graph, pipelines, *in.specular, "specular.", in, out.gradient, specular, filter).filtered;
     }
+  } else {
+    out.specular = in.specular;
   }
 
-  add_composite(graph, pipelines, {out.filtered, in.albedo, in.hdr, in.display, in.counters}, s);
+  add_composite(graph, pipelines,
+                {out.filtered, in.albedo, in.hdr, in.display, in.counters, out.specular,
+                 out.specular ? in.specular_albedo : std::nullopt},
+                s);
   return out;
 }
 

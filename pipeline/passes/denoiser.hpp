@@ -34,6 +34,11 @@ struct DenoiserInputs {
   // Not empty: the gradient passes are declared but left out for this reason (nothing moved), and
   // the temporal pass uses constant alpha this frame.
   std::string gradient_skip_reason;
+  // Two signals (pathtrace's SPLIT_SPECULAR, scenes with glossy materials): `illumination` is the
+  // diffuse one, with the one-signal luminance in .a for the gradient, and `specular` (RGBA32F,
+  // divided by `specular_albedo`, RGBA16F) gets a chain of its own: passes and histories named
+  // "specular.*", the same gradient; composite adds it re-modulated.
+  std::optional<graph::ResourceId> specular, specular_albedo;
 };
 
 struct DenoiserOutputs {
@@ -43,6 +48,7 @@ struct DenoiserOutputs {
   std::optional<graph::ResourceId> integrated;     // the temporal pass's output (rgb, temporal variance)
   std::optional<graph::ResourceId> variance;       // the variance pass's output, else `integrated`
   std::optional<graph::ResourceId> color_history;  // persistent colour history
+  std::optional<graph::ResourceId> specular;       // the specular chain's `filtered`, with two signals
 };
 
 DenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipelines, const DenoiserInputs& in,

@@ -10,8 +10,12 @@
 #include "shaders/gradient_select.hpp"
 #include "shaders/pathtrace.rayquery.hpp"
 #include "shaders/pathtrace.rayquery_gradients.hpp"
+#include "shaders/pathtrace.rayquery_gradients_split.hpp"
+#include "shaders/pathtrace.rayquery_split.hpp"
 #include "shaders/pathtrace.software.hpp"
 #include "shaders/pathtrace.software_gradients.hpp"
+#include "shaders/pathtrace.software_gradients_split.hpp"
+#include "shaders/pathtrace.software_split.hpp"
 
 namespace asvgf::passes {
 namespace {
@@ -82,7 +86,9 @@ void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const Scen
                              width,
                              height,
                              scene.sphere_count,
-                             demodulate ? 1u : 0u};
+                             !demodulate             ? 0u
+                             : t.diffuse_albedo_only ? 2u
+                                                     : 1u};
   auto bindings = scene_bindings(scene, shader);
   bindings.insert(
       bindings.end(),
@@ -94,10 +100,15 @@ void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const Scen
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
                    graph::ResourceId visibility, std::optional<graph::ResourceId> gradient_seeds,
                    graph::ResourceId illumination, graph::ResourceId rng_seed, graph::ResourceId ray_counter,
-                   const PathtraceSettings& s, std::uint32_t width, std::uint32_t height, const std::string& name) {
-  const hal::ShaderInfo& shader =
-      scene.ray_query ? (gradient_seeds ? shaders::pathtrace_rayquery_gradients : shaders::pathtrace_rayquery)
-                      : (gradient_seeds ? shaders::pathtrace_software_gradients : shaders::pathtrace_software);
+                   const PathtraceSettings& s, std::uint32_t width, std::uint32_t height, const std::string& name,
+                   std::optional<SpecularTargets> specular) {
+  // [ray query][gradient samples][split signals]
+  const hal::ShaderInfo* const variants[2][2][2] = {
+      {{&shaders::pathtrace_software, &shaders::pathtrace_software_split},
+       {&shaders::pathtrace_software_gradients, &shaders::pathtrace_software_gradients_split}},
+      {{&shaders::pathtrace_rayquery, &shaders::pathtrace_rayquery_split},
+       {&shaders::pathtrace_rayquery_gradients, &shaders::pathtrace_rayquery_gradients_split}}};
+  const hal::ShaderInfo& shader = *variants[scene.ray_query ? 1 : 0][gradient_seeds ? 1 : 0][specular ? 1 : 0];
   const PathtraceParams params{uniform_camera<shaders::pathtrace_software_uniforms::Camera>(scene.camera),
                                width,
                                height,
@@ -114,6 +125,8 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
                                    {"rng_seed", rng_seed},
                                    {"ray_counter", ray_counter}});
   if (gradient_seeds) bindings.push_back({"gradient_seeds", *gradient_seeds});
+  if (specular)
+    bindings.insert(bindings.end(), {{"specular", specular->signal}, {"specular_albedo", specular->albedo}});
   add_compute_pass(graph, name, shader, pipelines.get<decltype(params)>(shader), std::move(bindings), to_bytes(params),
                    {width, height, 1});
 }
@@ -131,8 +144,15 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
   // Bids, then the winners write: the lowest bid wins whatever order invocations run in.
   const GradientSelectParams select{
       uniform_camera<shaders::gradient_select_uniforms::Camera>(scene.camera), width, height, sw, sh, frame, 0, 0, 0};
-  const GradientResolveParams resolve{
-      uniform_camera<shaders::gradient_resolve_uniforms::Camera>(scene.camera), width, height, sw, sh, frame, 0, 0, 0};
+  const GradientResolveParams resolve{uniform_camera<shaders::gradient_resolve_uniforms::Camera>(scene.camera),
+                                      width,
+                                      height,
+                                      sw,
+                                      sh,
+                                      frame,
+                                      t.luminance_in_alpha ? 1u : 0u,
+                                      0,
+                                      0};
   add_compute_pass(graph, "gradient_select", shaders::gradient_select,
                    pipelines.get<GradientSelectParams>(shaders::gradient_select),
                    {{"triangles", scene.triangles},

@@ -25,11 +25,15 @@ SceneInputs import_scene(graph::RenderGraph& graph, const render::SceneGpu& scen
 
 struct GbufferTargets {
   graph::ResourceId visibility, depth_normal, motion, albedo;
+  bool diffuse_albedo_only = false;  // the diffuse lobe's albedo (pathtrace's split signals)
 };
 // `demodulate` false: the albedo written is 1 (the denoiser then filters radiance, albedo included).
 void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
                  const GbufferTargets& targets, std::uint32_t width, std::uint32_t height, bool demodulate = true);
 
+struct SpecularTargets {
+  graph::ResourceId signal, albedo;
+};
 struct PathtraceSettings {
   std::uint32_t frame = 0;        // decorrelates frames
   std::uint32_t seed = 0;         // --seed: the whole run's random numbers
@@ -38,13 +42,16 @@ struct PathtraceSettings {
   bool demodulate = true;         // false: illumination is radiance (no division by the albedo)
 };
 // `gradient_seeds` present: the A-SVGF variant that starts carried pixels from last frame's point.
+// `specular` present: the split variant writes the specular signal (RGBA32F) and the GGX lobe's
+// albedo (RGBA16F) there, and the diffuse signal, with the one-signal luminance in .a, to
+// `illumination` (the gbuffer writes the diffuse albedo: GbufferTargets::diffuse_albedo_only).
 // `ray_counter`: a buffer whose first uint the pass adds the rays it traced to (closest-hit and
 // shadow rays after the primary hit; the primary ray is the gbuffer's).
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
                    graph::ResourceId visibility, std::optional<graph::ResourceId> gradient_seeds,
                    graph::ResourceId illumination, graph::ResourceId rng_seed, graph::ResourceId ray_counter,
                    const PathtraceSettings& settings, std::uint32_t width, std::uint32_t height,
-                   const std::string& name = "pathtrace");
+                   const std::string& name = "pathtrace", std::optional<SpecularTargets> specular = std::nullopt);
 
 struct GradientSelectTargets {
   graph::ResourceId visibility;    // persistent: last frame's version is read
@@ -53,6 +60,7 @@ struct GradientSelectTargets {
   graph::ResourceId depth_normal;  // this frame's
   graph::ResourceId claims;        // transient buffer, one uint per stratum
   graph::ResourceId gradient_seeds, gradient_prev;
+  bool luminance_in_alpha = false;  // illumination holds pathtrace's split signals
 };
 // Three passes: gradient_clear, gradient_select (bids), gradient_resolve (the winners write). Left
 // out, with `skip_reason`, when not empty.

@@ -17,7 +17,7 @@ using Uniforms = asvgf::shaders::gradient_uniforms::Params;
 graph::PassBuilder add_gradient(graph::RenderGraph& graph, PipelineCache& pipelines, const GradientResources& r) {
   const auto& full = graph.resource(r.illumination);
   const auto& out = graph.resource(r.gradient);
-  const Uniforms u{full.width, full.height, out.width, out.height};
+  const Uniforms u{full.width, full.height, out.width, out.height, r.luminance_in_alpha ? 1u : 0u, 0, 0, 0};
   const hal::ShaderInfo& shader = asvgf::shaders::gradient;
   const auto pipeline = pipelines.get<Uniforms>(shader);
   return add_compute_pass(

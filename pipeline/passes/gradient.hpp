@@ -12,6 +12,7 @@ struct GradientResources {
   graph::ResourceId illumination = 0;   // read: w x h, this frame's demodulated samples (RGBA32F)
   graph::ResourceId gradient_prev = 0;  // read: ceil(w/3) x ceil(h/3) RG32F (l_prev, index or -1)
   graph::ResourceId gradient = 0;       // written: ceil(w/3) x ceil(h/3) RGBA16F (delta, Delta, 0, 0)
+  bool luminance_in_alpha = false;      // illumination.a holds the luminance (pathtrace's split signals)
 };
 // Adds the pass "gradient".
 graph::PassBuilder add_gradient(graph::RenderGraph& graph, PipelineCache& pipelines, const GradientResources& r);

@@ -42,7 +42,7 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
   // Whether the histories hold anything is known only when the pass executes. The counters need no
   // barrier of their own: SanitizeCounters::import makes them an output whose final barrier orders
   // each frame's atomics before the next frame's.
-  return add_compute_pass(graph, "temporal", *shader, pipeline, std::move(bindings), to_bytes(u),
+  return add_compute_pass(graph, r.prefix + "temporal", *shader, pipeline, std::move(bindings), to_bytes(u),
                           {u.width, u.height, 1}, [r](graph::PassContext& ctx, std::vector<std::byte>& uniforms) {
                             const std::uint32_t valid = ctx.history_valid(r.depth_normal) &&
                                                         ctx.history_valid(r.color_history) &&

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "graph/render_graph.hpp"
 #include "passes/compute_pass.hpp"
@@ -21,8 +22,9 @@ struct TemporalResources {
   graph::ResourceId integrated = 0;     // written: RGBA16F (rgb, temporal variance); may be color_history
   graph::ResourceId counters = 0;       // read-written SanitizeCounters buffer
   std::optional<graph::ResourceId> gradient;  // read: 1/3 res RGBA16F (delta^, Delta^); adaptive alpha
+  std::string prefix;                         // of the pass name: "specular." for the second signal
 };
-// Adds "temporal". The adaptive variant is used when settings.adaptive and a gradient is given.
+// Adds "<prefix>temporal". The adaptive variant is used when settings.adaptive and a gradient is given.
 // Histories not valid this frame (first frame, GraphRuntime::reset_histories) reset every pixel.
 graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipelines, const TemporalResources& r,
                                 const DenoiseSettings& settings);

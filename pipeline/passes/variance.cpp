@@ -18,7 +18,7 @@ graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipeli
   const Uniforms u{decl.width, decl.height, s.sigma_z, s.sigma_n, s.sigma_l, s.min_history};
   const hal::ShaderInfo& shader = asvgf::shaders::variance;
   const auto pipeline = pipelines.get<Uniforms>(shader);
-  return add_compute_pass(graph, "variance", shader, pipeline,
+  return add_compute_pass(graph, r.prefix + "variance", shader, pipeline,
                           {{"integrated", r.integrated},
                            {"moments", r.moments},
                            {"depth_normal", r.depth_normal},

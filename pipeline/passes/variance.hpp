@@ -2,6 +2,8 @@
 // the moments, or a 7x7 spatial estimate while the history is shorter than settings.min_history.
 #pragma once
 
+#include <string>
+
 #include "graph/render_graph.hpp"
 #include "passes/compute_pass.hpp"
 #include "passes/denoise_settings.hpp"
@@ -13,8 +15,9 @@ struct VarianceResources {
   graph::ResourceId moments = 0;         // read: this frame's RGBA32F moments (E[l], E[l^2], n)
   graph::ResourceId depth_normal = 0;    // read: RGBA32F
   graph::ResourceId color_variance = 0;  // written: RGBA16F (rgb, variance)
+  std::string prefix;                    // of the pass name: "specular." for the second signal
 };
-// Adds "variance".
+// Adds "<prefix>variance".
 graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipelines, const VarianceResources& r,
                                 const DenoiseSettings& settings);
 

@@ -49,6 +49,7 @@ SceneGpu::SceneGpu(hal::Device& device, const scene::Scene& scene, bool ray_quer
   for (const auto& m : scene.materials) {
     const bool emissive = m.emission.r > 0 || m.emission.g > 0 || m.emission.b > 0;
     textured_ = textured_ || m.albedo_texture >= 0;
+    glossy_ = glossy_ || m.glossy();
     materials.push_back({glm::vec4(m.albedo, static_cast<float>(m.albedo_texture + 1)),
                          glm::vec4(m.emission, emissive ? 1.0f : 0.0f),
                          glm::vec4(m.roughness, m.metallic, m.specular, 0.0f)});

@@ -95,6 +95,7 @@ class SceneGpu {
   hal::BufferHandle triangle_uvs() const { return triangle_uvs_; }
   hal::BufferHandle texels() const { return texels_; }
   bool textured() const { return textured_; }
+  bool glossy() const { return glossy_; }  // a material has a GGX lobe (metallic or specular > 0)
 
  private:
   std::vector<GpuTriangle> world_triangles(const scene::FrameState& state) const;
@@ -115,6 +116,7 @@ class SceneGpu {
   hal::BufferHandle accel_boxes_;
   hal::BufferHandle triangle_uvs_, texels_;
   bool textured_ = false;
+  bool glossy_ = false;
   hal::AccelHandle blas_, tlas_;
   std::vector<hal::Resource> owned_;
 };

@@ -68,9 +68,11 @@ float glossy_lobe_probability(Glossy g, float n_v) {
 }
 
 // f(v, l) cos(theta_l) and the sampling pdf of l (per solid angle), in the frame where n = z; v and l
-// are unit vectors there with v.z > 0.
-vec3 glossy_f_cos(Glossy g, vec3 v, vec3 l, out float pdf) {
+// are unit vectors there with v.z > 0. `specular`: the GGX lobe's part of the result (the rest is
+// the diffuse lobe's), for the path tracer's split into diffuse and specular signals.
+vec3 glossy_f_cos(Glossy g, vec3 v, vec3 l, out float pdf, out vec3 specular) {
   pdf = 0.0;
+  specular = vec3(0.0);
   if (l.z <= 0.0 || v.z <= 0.0) return vec3(0.0);
   vec3 h = normalize(v + l);
   float d = ggx_d(h, g.alpha);
@@ -80,6 +82,7 @@ vec3 glossy_f_cos(Glossy g, vec3 v, vec3 l, out float pdf) {
   vec3 diff = diffuse_weight(g, v.z) * (l.z / kPi);
   float p = glossy_lobe_probability(g, v.z);
   pdf = p * d / (4.0 * v.z * (1.0 + lambda_v)) + (1.0 - p) * l.z / kPi;
+  specular = spec;
   return spec + diff;
 }
 
@@ -108,18 +111,23 @@ vec3 glossy_sample(Glossy g, vec3 v, float u0, float u1, float u2) {
   return reflect(-v, h);
 }
 
-// What the denoiser demodulates a glossy surface by: its directional albedo seen from n.v, the
-// diffuse part exactly and the GGX part by Karis's fit of the split-sum table ("Physically Based
-// Shading on Mobile", 2014; Lazarov 2013), with F90 = mix(s, 1, m).
-vec3 glossy_albedo(Glossy g, float roughness, float n_v) {
+// The GGX lobe's directional albedo seen from n.v by Karis's fit of the split-sum table
+// ("Physically Based Shading on Mobile", 2014; Lazarov 2013), with F90 = mix(s, 1, m). The fit
+// dips slightly below 0 near roughness 1 (about -0.002): callers clamp.
+vec3 glossy_specular_albedo_fit(Glossy g, float roughness, float n_v) {
   vec4 r = roughness * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
   float a004 = min(r.x * r.x, exp2(-9.28 * n_v)) * r.x + r.y;
   vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
   vec3 f0 = mix(vec3(g.specular * kDielectricF0), g.base, g.metallic);
   float f90 = mix(g.specular, 1.0, g.metallic);
-  // The fit dips slightly below 0 near roughness 1 (about -0.002): a dark metal must not get a
-  // negative albedo.
-  return max(diffuse_weight(g, n_v) + f0 * ab.x + f90 * ab.y, vec3(0.0));
+  return f0 * ab.x + f90 * ab.y;
+}
+
+// What the denoiser demodulates a glossy surface by when it filters one signal: its directional
+// albedo seen from n.v, the diffuse part exactly and the GGX part by the fit above (a dark metal
+// must not get a negative albedo).
+vec3 glossy_albedo(Glossy g, float roughness, float n_v) {
+  return max(diffuse_weight(g, n_v) + glossy_specular_albedo_fit(g, roughness, n_v), vec3(0.0));
 }
 
 #endif

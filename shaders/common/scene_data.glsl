@@ -91,6 +91,6 @@ vec3 decode_normal(vec2 e) {
   return normalize(n);
 }
 
-float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+#include "common/color.glsl"  // luminance(), for the glossy lobe's choice and the split signals
 
 #endif

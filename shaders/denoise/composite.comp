@@ -3,7 +3,8 @@
 // display image: exposure, then the ACES filmic fit of Narkowicz (2015) or a plain clamp, then the
 // sRGB transfer function, stored as RGBA8 unorm. Non-finite radiance (possible with the raw and
 // reference methods, which skip the sanitising temporal pass) is written as 0 and counted, so that
-// no output ever holds NaN or Inf.
+// no output ever holds NaN or Inf. The SPLIT variant adds the filtered specular signal times its
+// own albedo (pathtrace's SPLIT_SPECULAR).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -23,6 +24,10 @@ layout(set = 0, binding = 2) uniform texture2D albedo;
 layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D hdr;
 layout(set = 0, binding = 4, rgba8) writeonly uniform image2D display;
 // SanitizeCounters (temporal.comp declares the same block): composite counts zeroed_outputs.
+#ifdef SPLIT
+layout(set = 0, binding = 6) uniform texture2D specular;
+layout(set = 0, binding = 7) uniform texture2D specular_albedo;
+#endif
 layout(set = 0, binding = 5) buffer Counters {
   uint nan_samples;
   uint inf_samples;
@@ -41,6 +46,9 @@ void main() {
   if (!inside(p, params.width, params.height)) return;
   vec3 light = texelFetch(illumination, p, 0).rgb;
   vec3 radiance = light * max(texelFetch(albedo, p, 0).rgb, vec3(1e-3));
+#ifdef SPLIT
+  radiance += texelFetch(specular, p, 0).rgb * max(texelFetch(specular_albedo, p, 0).rgb, vec3(1e-3));
+#endif
   if (any_not_finite(radiance)) {
     radiance = vec3(0.0);
     atomicAdd(counters.zeroed_outputs, 1u);

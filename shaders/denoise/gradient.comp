@@ -16,6 +16,10 @@ layout(set = 0, binding = 0) uniform Params {
   uint height;
   uint gradient_width;  // ceil(width / 3)
   uint gradient_height;
+  uint luminance_in_alpha;  // 1: illumination.a holds the luminance (pathtrace's SPLIT_SPECULAR), -1 missing
+  uint pad0;
+  uint pad1;
+  uint pad2;
 } params;
 layout(set = 0, binding = 1) uniform texture2D illumination;
 layout(set = 0, binding = 2) uniform texture2D gradient_prev;
@@ -26,13 +30,15 @@ void main() {
   if (!inside(s, params.gradient_width, params.gradient_height)) return;
   vec2 prev = texelFetch(gradient_prev, s, 0).xy;
   vec2 result = vec2(0.0);
-  if (prev.y >= 0.0 && prev.y < 9.0 && !not_finite(prev.x)) {
+  // l_prev < 0: last frame's sample was missing (luminance_in_alpha).
+  if (prev.y >= 0.0 && prev.y < 9.0 && !not_finite(prev.x) && prev.x >= 0.0) {
     int index = int(prev.y);
     ivec2 p = 3 * s + ivec2(index % 3, index / 3);
     if (inside(p, params.width, params.height)) {
-      vec3 c = texelFetch(illumination, p, 0).rgb;
-      if (!any_not_finite(c)) {
-        float l_cur = luminance(clamp_sample(c));
+      vec4 c = texelFetch(illumination, p, 0);
+      bool usable = params.luminance_in_alpha != 0u ? c.a >= 0.0 : !any_not_finite(c.rgb);
+      if (usable) {
+        float l_cur = params.luminance_in_alpha != 0u ? c.a : luminance(clamp_sample(c.rgb));
         float l_prev = clamp(prev.x, 0.0, kFp16Max);
         result = vec2(l_cur - l_prev, max(l_cur, l_prev));
       }

@@ -16,7 +16,8 @@ layout(set = 0, binding = 0, std140) uniform Params {
   uint width;
   uint height;
   uint sphere_count;
-  uint demodulate;  // 0: write albedo 1, the denoiser filters radiance (--no-demodulation)
+  uint demodulate;  // 0: write albedo 1, the denoiser filters radiance (--no-demodulation); 2: the
+                    // diffuse lobe's albedo (pathtrace's SPLIT_SPECULAR writes the GGX lobe's)
 } params;
 
 #include "frame/scene_bindings.glsl"
@@ -78,7 +79,12 @@ void main() {
     float gx = abs(plane_depth(centre + vec2(1.0, 0.0), x, n) - z);
     float gy = abs(plane_depth(centre + vec2(0.0, 1.0), x, n) - z);
     dn = vec4(z, max(gx, gy), encode_normal(n));
-    if (params.demodulate != 0u) alb = vec4(demodulation_albedo(h.triangle, h.bary, -dot(n, d)), 1.0);
+    if (params.demodulate == 1u) alb = vec4(demodulation_albedo(h.triangle, h.bary, -dot(n, d)), 1.0);
+    if (params.demodulate == 2u) {
+      vec3 diffuse, specular;
+      split_demodulation_albedos(h.triangle, h.bary, -dot(n, d), diffuse, specular);
+      alb = vec4(diffuse, 1.0);
+    }
     prev_point = previous_triangles.values[h.triangle].p0 * (1.0 - h.bary.x - h.bary.y) +
                  previous_triangles.values[h.triangle].p1 * h.bary.x + previous_triangles.values[h.triangle].p2 * h.bary.y;
   } else {

@@ -16,7 +16,7 @@ layout(set = 0, binding = 0, std140) uniform Params {
   uint strata_width;
   uint strata_height;
   uint frame;
-  uint pad0;
+  uint luminance_in_alpha;  // 1: illumination.a holds the luminance (pathtrace's SPLIT_SPECULAR), -1 missing
   uint pad1;
   uint pad2;
 } params;
@@ -43,6 +43,7 @@ void main() {
   Projection p = project_sample(ivec2(int(winner % params.strata_width), int(winner / params.strata_width)));
   uint seed = texelFetch(prev_rng_seed, p.from, 0).x;
   imageStore(gradient_seeds, p.to, uvec4(seed, p.vis.y, p.vis.z, p.vis.w));
-  float l_prev = luminance(texelFetch(prev_illumination, p.from, 0).rgb);
+  vec4 prev = texelFetch(prev_illumination, p.from, 0);
+  float l_prev = params.luminance_in_alpha != 0u ? prev.a : luminance(prev.rgb);
   imageStore(gradient_prev, sq, vec4(l_prev, float((p.to.x % 3) + 3 * (p.to.y % 3)), 0.0, 0.0));
 }

@@ -4,6 +4,12 @@
 // ones) by multiple importance sampling (power heuristic), Russian roulette after two bounces. Writes demodulated illumination (radiance / demodulation_albedo,
 // guarded) and the random seed each pixel used. With GRADIENT_SAMPLES, pixels that gradient_select gave a
 // carried seed start from last frame's surface point with last frame's seed instead.
+// With SPLIT_SPECULAR the radiance is written as two signals, as Q2RTX and NRD filter them: what
+// the primary surface's GGX lobe reflects (`specular`, divided by that lobe's directional albedo)
+// and the rest (`illumination`, divided by the diffuse albedo), with the luminance of the one-signal
+// illumination in illumination.a for the temporal gradient. The split does not change a path: each
+// contribution after the first bounce is shared by the first bounce's f_specular / f (per
+// channel), so the two signals re-modulated add up to the one-signal radiance.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -42,6 +48,13 @@ layout(set = 0, binding = 13) uniform utexture2D gradient_seeds;
 #endif
 // Rays traced this frame (closest and shadow), for the rays-per-second benchmark.
 layout(set = 0, binding = 14, std430) buffer RayCounter { uint count; } ray_counter;
+#ifdef SPLIT_SPECULAR
+layout(set = 0, binding = 15, rgba32f) writeonly uniform image2D specular;
+// The GGX lobe's albedo of the pixel's own surface (carried gradient samples shade another point),
+// what composite re-modulates the filtered specular signal by; here and not in the gbuffer, whose
+// storage images are at WebGPU's limit of 4.
+layout(set = 0, binding = 16, rgba16f) writeonly uniform image2D specular_albedo;
+#endif
 
 uint rays_traced = 0u;
 
@@ -115,8 +128,10 @@ Vertex make_vertex(uint tri, vec3 n, vec3 v_world, vec3 albedo) {
 // One light sample's radiance at a surface point (normal n, facing the incoming side), MIS-weighted
 // against BSDF sampling; x is the point's spawn_origin. On a Lambertian vertex the result still
 // needs the albedo (Le cos / (pi pdf) w), on a glossy one it is complete (Le f cos / pdf w). Skips
-// the emissive triangle `self` (no self-illumination); shadow rays skip it too.
-vec3 sample_light(vec3 x, vec3 n, uint self, Vertex vertex, inout uint state) {
+// the emissive triangle `self` (no self-illumination); shadow rays skip it too. `specular`: the
+// GGX lobe's part of the result.
+vec3 sample_light(vec3 x, vec3 n, uint self, Vertex vertex, inout uint state, out vec3 specular) {
+  specular = vec3(0.0);
   if (params.light_count == 0u) return vec3(0.0);
   // Pick a light by its probability (power).
   float u = next_random(state);
@@ -162,9 +177,11 @@ vec3 sample_light(vec3 x, vec3 n, uint self, Vertex vertex, inout uint state) {
   float cos_x = dot(n, dir);
   if (cos_x <= 0.0) return vec3(0.0);
   vec3 f_cos = vec3(cos_x / kPi);
+  vec3 f_cos_specular = vec3(0.0);
   float pdf_bsdf = cos_x / kPi;
   if (vertex.glossy) {
-    f_cos = glossy_f_cos(vertex.model, vertex.v, vec3(dot(dir, vertex.t), dot(dir, vertex.b), cos_x), pdf_bsdf);
+    f_cos = glossy_f_cos(vertex.model, vertex.v, vec3(dot(dir, vertex.t), dot(dir, vertex.b), cos_x), pdf_bsdf,
+                         f_cos_specular);
     if (pdf_bsdf <= 0.0) return vec3(0.0);
   }
   // A sphere light in front of a triangle light occludes it, as a BSDF-sampled path would find.
@@ -174,6 +191,7 @@ vec3 sample_light(vec3 x, vec3 n, uint self, Vertex vertex, inout uint state) {
   rays_traced += 1u;
   if (trace_any(x, dir, 0.0, dist * kShadowEnd, self)) return vec3(0.0);
   float w = power_heuristic(pdf_light, pdf_bsdf);
+  specular = l.emission * f_cos_specular / pdf_light * w;
   return l.emission * f_cos / pdf_light * w;
 }
 
@@ -191,14 +209,20 @@ float emissive_triangle_pdf(uint tri, vec3 x, vec3 dir, float t) {
 }
 
 // One path from a known first surface point (triangle tri at barycentrics b, normal n facing the
-// viewer v); returns radiance towards the camera.
-vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 v, vec3 albedo, vec3 emission, inout uint state) {
+// viewer v); returns radiance towards the camera, and in `specular` the part of it the first
+// vertex's GGX lobe reflected.
+vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 v, vec3 albedo, vec3 emission, inout uint state, out vec3 specular) {
   vec3 radiance = emission;
   vec3 throughput = vec3(1.0);
+  specular = vec3(0.0);
+  vec3 specular_share = vec3(0.0);  // of each contribution after the first bounce
   for (uint bounce = 0u; bounce < params.max_bounces; ++bounce) {
     vec3 o = spawn_origin(load_triangle(tri), b, n);
     Vertex vertex = make_vertex(tri, n, v, albedo);
-    radiance += throughput * (vertex.glossy ? vec3(1.0) : albedo) * sample_light(o, n, tri, vertex, state);
+    vec3 light_specular;
+    vec3 light = throughput * (vertex.glossy ? vec3(1.0) : albedo) * sample_light(o, n, tri, vertex, state, light_specular);
+    radiance += light;
+    specular += bounce == 0u ? light_specular : light * specular_share;
     vec3 dir;
     float pdf_bsdf;
     if (!vertex.glossy) {
@@ -214,10 +238,15 @@ vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 v, vec3 albedo, vec3 emission, in
       float u2 = next_random(state);
       vec3 l = glossy_sample(vertex.model, vertex.v, u0, u1, u2);
       if (l.z <= 0.0) break;
-      vec3 f_cos = glossy_f_cos(vertex.model, vertex.v, l, pdf_bsdf);
+      vec3 f_cos_specular;
+      vec3 f_cos = glossy_f_cos(vertex.model, vertex.v, l, pdf_bsdf, f_cos_specular);
       if (pdf_bsdf <= 0.0) break;
       dir = normalize(l.x * vertex.t + l.y * vertex.b + l.z * n);
       throughput *= f_cos / pdf_bsdf;
+      if (bounce == 0u)
+        specular_share = vec3(f_cos.r > 0.0 ? f_cos_specular.r / f_cos.r : 0.0,
+                              f_cos.g > 0.0 ? f_cos_specular.g / f_cos.g : 0.0,
+                              f_cos.b > 0.0 ? f_cos_specular.b / f_cos.b : 0.0);
     }
     rays_traced += 1u;
     Hit h = trace_closest(o, dir, 0.0, 1e30, tri);
@@ -226,7 +255,9 @@ vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 v, vec3 albedo, vec3 emission, in
     if (sphere >= 0) {
       Light l = load_light(uint(sphere));
       float pdf_light = l.pdf * sphere_cone_pdf(o, l.position, l.radius);
-      radiance += throughput * l.emission * power_heuristic(pdf_bsdf, pdf_light);
+      vec3 c = throughput * l.emission * power_heuristic(pdf_bsdf, pdf_light);
+      radiance += c;
+      specular += c * specular_share;
       break;
     }
     if (!h.hit) break;
@@ -235,7 +266,9 @@ vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 v, vec3 albedo, vec3 emission, in
     m.emission = materials.values[t.material].emission;
     if (m.emission.a > 0.0) {
       float pdf_light = emissive_triangle_pdf(h.triangle, o, dir, h.t);
-      radiance += throughput * m.emission.rgb * power_heuristic(pdf_bsdf, pdf_light);
+      vec3 c = throughput * m.emission.rgb * power_heuristic(pdf_bsdf, pdf_light);
+      radiance += c;
+      specular += c * specular_share;
     }
     n = triangle_normal(t);
     if (dot(n, dir) > 0.0) n = -n;
@@ -253,9 +286,31 @@ vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 v, vec3 albedo, vec3 emission, in
   return radiance;
 }
 
+// The primary surface point of a visibility texel that hit a triangle: normal facing the camera, and
+// the direction to the camera.
+void primary_surface(uvec4 vis, out Triangle t, out vec2 b, out vec3 n, out vec3 v) {
+  t = load_triangle(vis.y);
+  b = vec2(uintBitsToFloat(vis.z), uintBitsToFloat(vis.w));
+  vec3 x = t.p0 * (1.0 - b.x - b.y) + t.p1 * b.x + t.p2 * b.y;
+  n = triangle_normal(t);
+  if (dot(n, x - cam.position.xyz) > 0.0) n = -n;
+  v = normalize(cam.position.xyz - x);
+}
+
 void shade_pixel(ivec2 p) {
   LOAD_CAMERA(cam, params.camera);
   uvec4 vis = texelFetch(visibility, p, 0);
+#ifdef SPLIT_SPECULAR
+  vec3 own_specular_albedo = vec3(1.0);
+  if (vis.x != 0u && vis.x != 0xFFFFFFFFu && params.demodulate != 0u) {
+    Triangle t;
+    vec2 b;
+    vec3 n, v, diffuse;
+    primary_surface(vis, t, b, n, v);
+    split_demodulation_albedos(vis.y, b, dot(n, v), diffuse, own_specular_albedo);
+  }
+  imageStore(specular_albedo, p, vec4(own_specular_albedo, 1.0));
+#endif
   uint seed = pixel_seed(uvec2(p), params.width, params.frame, params.seed);
 #ifdef GRADIENT_SAMPLES
   uvec4 carried = texelFetch(gradient_seeds, p, 0);
@@ -268,25 +323,45 @@ void shade_pixel(ivec2 p) {
 #endif
   vec3 radiance = vec3(0.0);
   vec3 demodulation = vec3(1.0);
+  vec3 specular_radiance = vec3(0.0);
+  vec3 diffuse_albedo = vec3(1.0);
+  vec3 specular_albedo = vec3(1.0);
   if (vis.x == 0xFFFFFFFFu) {
     radiance = lights.values[vis.y].emission;  // a sphere light seen directly
   } else if (vis.x != 0u) {
-    Triangle t = load_triangle(vis.y);
-    vec2 b = vec2(uintBitsToFloat(vis.z), uintBitsToFloat(vis.w));
-    vec3 x = t.p0 * (1.0 - b.x - b.y) + t.p1 * b.x + t.p2 * b.y;
-    vec3 n = triangle_normal(t);
-    if (dot(n, x - cam.position.xyz) > 0.0) n = -n;
-    vec3 v = normalize(cam.position.xyz - x);
+    Triangle t;
+    vec2 b;
+    vec3 n, v;
+    primary_surface(vis, t, b, n, v);
     vec3 albedo = surface_albedo(vis.y, b);
-    if (params.demodulate != 0u) demodulation = demodulation_albedo(vis.y, b, dot(n, v));
+    if (params.demodulate != 0u) {
+      demodulation = demodulation_albedo(vis.y, b, dot(n, v));
+#ifdef SPLIT_SPECULAR
+      split_demodulation_albedos(vis.y, b, dot(n, v), diffuse_albedo, specular_albedo);
+#endif
+    }
     vec3 emission = materials.values[t.material].emission.rgb;
     for (uint s = 0u; s < params.spp; ++s) {
       uint state = s == 0u ? seed : pcg_hash(seed + s);
-      radiance += trace_path(vis.y, b, n, v, albedo, emission, state);
+      vec3 path_specular;
+      radiance += trace_path(vis.y, b, n, v, albedo, emission, state, path_specular);
+      specular_radiance += path_specular;
     }
     radiance /= float(max(params.spp, 1u));
+    specular_radiance /= float(max(params.spp, 1u));
   }
-  imageStore(illumination, p, vec4(radiance / max(demodulation, vec3(kAlbedoGuard)), 0.0));
+  vec3 one_signal = radiance / max(demodulation, vec3(kAlbedoGuard));
+#ifdef SPLIT_SPECULAR
+  // Rounding can leave the difference a few ulps below 0 where the GGX lobe reflects everything.
+  vec3 diffuse_radiance = max(radiance - specular_radiance, vec3(0.0));
+  // The gradient passes read a non-finite sample's luminance as -1: missing.
+  float one_signal_luminance = any_not_finite(one_signal) ? -1.0 : luminance(clamp_sample(one_signal));
+  imageStore(illumination, p,
+             vec4(diffuse_radiance / max(diffuse_albedo, vec3(kAlbedoGuard)), one_signal_luminance));
+  imageStore(specular, p, vec4(specular_radiance / max(specular_albedo, vec3(kAlbedoGuard)), 0.0));
+#else
+  imageStore(illumination, p, vec4(one_signal, 0.0));
+#endif
   imageStore(rng_seed, p, uvec4(seed));
 }
 

@@ -89,6 +89,22 @@ vec3 demodulation_albedo(uint tri, vec2 bary, float n_v) {
   return glossy_albedo(triangle_glossy_model(tri, albedo), roughness, clamp(n_v, 0.0, 1.0));
 }
 
+// The two albedos when the denoiser filters diffuse and specular light apart: the diffuse lobe's
+// (a Lambertian surface's albedo) and the GGX lobe's directional albedo (1 where there is no GGX
+// lobe: its signal is 0 there). Both 1 on emitters, as above.
+void split_demodulation_albedos(uint tri, vec2 bary, float n_v, out vec3 diffuse, out vec3 specular) {
+  diffuse = vec3(1.0);
+  specular = vec3(1.0);
+  if (materials.values[triangles.values[tri].material].emission.a > 0.0) return;
+  diffuse = surface_albedo(tri, bary);
+  if (!triangle_glossy(tri)) return;
+  float roughness = materials.values[triangles.values[tri].material].surface.x;
+  Glossy g = triangle_glossy_model(tri, diffuse);
+  float c = clamp(n_v, 0.0, 1.0);
+  diffuse = diffuse_weight(g, c);
+  specular = max(glossy_specular_albedo_fit(g, roughness, c), vec3(0.0));
+}
+
 #include "common/trace.glsl"
 
 #endif

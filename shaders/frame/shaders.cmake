@@ -2,10 +2,15 @@
 # in two variants: ray queries, and the software BVH for devices without them.
 asvgf_add_shader(gbuffer SOURCE frame/gbuffer.comp
                  VARIANTS rayquery=TRACE_RAY_QUERY software=TRACE_SOFTWARE)
+# The _split variants write diffuse and specular signals apart (scenes with glossy materials).
 asvgf_add_shader(pathtrace SOURCE frame/pathtrace.comp
                  VARIANTS rayquery=TRACE_RAY_QUERY software=TRACE_SOFTWARE
                           rayquery_gradients=TRACE_RAY_QUERY,GRADIENT_SAMPLES
-                          software_gradients=TRACE_SOFTWARE,GRADIENT_SAMPLES)
+                          software_gradients=TRACE_SOFTWARE,GRADIENT_SAMPLES
+                          rayquery_split=TRACE_RAY_QUERY,SPLIT_SPECULAR
+                          software_split=TRACE_SOFTWARE,SPLIT_SPECULAR
+                          rayquery_gradients_split=TRACE_RAY_QUERY,GRADIENT_SAMPLES,SPLIT_SPECULAR
+                          software_gradients_split=TRACE_SOFTWARE,GRADIENT_SAMPLES,SPLIT_SPECULAR)
 asvgf_add_shader(gradient_clear SOURCE frame/gradient_clear.comp)
 asvgf_add_shader(gradient_select SOURCE frame/gradient_select.comp)
 asvgf_add_shader(gradient_resolve SOURCE frame/gradient_resolve.comp)

@@ -15,13 +15,18 @@ struct FrameInputs {
   std::vector<std::uint32_t> visibility;  // 4 per pixel
   std::vector<float> depth_normal, motion, illumination;  // 4 per pixel
   std::vector<std::uint16_t> albedo;                     // 4 fp16 per pixel
+  // With `split`: pathtrace's second signal and its albedo; `illumination` and `albedo` are then
+  // the diffuse ones.
+  std::vector<float> specular;
+  std::vector<std::uint16_t> specular_albedo;
 };
 
 // Renders frames 0..`frame` of `scene` (so that "previous" is frame-1) and returns frame `frame`'s
-// inputs. `spp` samples per pixel, `max_bounces`, `seed` as in the path tracer.
+// inputs. `spp` samples per pixel, `max_bounces`, `seed` as in the path tracer; `split`: diffuse and
+// specular signals apart (the frame's choice on glossy scenes).
 inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::Scene& scene, bool ray_query,
                                        std::uint32_t width, std::uint32_t height, int frame, std::uint32_t spp = 1,
-                                       std::uint32_t max_bounces = 4, std::uint32_t seed = 7) {
+                                       std::uint32_t max_bounces = 4, std::uint32_t seed = 7, bool split = false) {
   using namespace asvgf;
   render::SceneGpu gpu(device, scene, ray_query);
   graph::GraphRuntime runtime(device);
@@ -32,11 +37,10 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
     hal::Format format;
     hal::ImageHandle image;
   };
-  Target targets[] = {{"visibility", hal::Format::RGBA32Uint, {}},
-                      {"depth_normal", hal::Format::RGBA32F, {}},
-                      {"motion", hal::Format::RGBA32F, {}},
-                      {"albedo", hal::Format::RGBA16F, {}},
-                      {"illumination", hal::Format::RGBA32F, {}}};
+  Target targets[] = {{"visibility", hal::Format::RGBA32Uint, {}},  {"depth_normal", hal::Format::RGBA32F, {}},
+                      {"motion", hal::Format::RGBA32F, {}},         {"albedo", hal::Format::RGBA16F, {}},
+                      {"illumination", hal::Format::RGBA32F, {}},   {"specular", hal::Format::RGBA32F, {}},
+                      {"specular_albedo", hal::Format::RGBA16F, {}}};
   for (auto& t : targets) t.image = device.create_image({t.name, width, height, t.format, usage});
   const auto ray_counter = device.create_buffer({"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst});
   const std::uint32_t zeros[4] = {};
@@ -47,14 +51,17 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
     if (f < frame) continue;  // only the last frame is rendered; earlier updates set "previous"
     graph::RenderGraph g;
     const auto scene_in = passes::import_scene(g, gpu, width, height);
-    graph::ResourceId ids[5];
-    for (int i = 0; i < 5; ++i) ids[i] = g.import(targets[i].name, targets[i].image, hal::State::Undefined, width, height);
+    const int count = split ? 7 : 5;
+    graph::ResourceId ids[7];
+    for (int i = 0; i < count; ++i)
+      ids[i] = g.import(targets[i].name, targets[i].image, hal::State::Undefined, width, height);
     const auto seeds = g.add_image("rng_seed", width, height, hal::Format::R32Uint);
     const auto rays = g.import("ray_counter", ray_counter, hal::State::CopyDst);
-    passes::add_gbuffer(g, pipelines, scene_in, {ids[0], ids[1], ids[2], ids[3]}, width, height);
+    passes::add_gbuffer(g, pipelines, scene_in, {ids[0], ids[1], ids[2], ids[3], split}, width, height);
     passes::add_pathtrace(g, pipelines, scene_in, ids[0], std::nullopt, ids[4], seeds, rays,
-                          {static_cast<std::uint32_t>(frame), seed, max_bounces, spp}, width, height);
-    for (auto id : ids) g.output(id, hal::State::CopySrc);
+                          {static_cast<std::uint32_t>(frame), seed, max_bounces, spp}, width, height, "pathtrace",
+                          split ? std::optional(passes::SpecularTargets{ids[5], ids[6]}) : std::nullopt);
+    for (int i = 0; i < count; ++i) g.output(ids[i], hal::State::CopySrc);
     auto compiled = runtime.compile(g);
     runtime.execute(compiled, *commands);
     device.submit(*commands);
@@ -74,6 +81,12 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
   device.read_image(targets[2].image, std::as_writable_bytes(std::span(out.motion)));
   device.read_image(targets[3].image, std::as_writable_bytes(std::span(out.albedo)));
   device.read_image(targets[4].image, std::as_writable_bytes(std::span(out.illumination)));
+  if (split) {
+    out.specular.resize(n);
+    out.specular_albedo.resize(n);
+    device.read_image(targets[5].image, std::as_writable_bytes(std::span(out.specular)));
+    device.read_image(targets[6].image, std::as_writable_bytes(std::span(out.specular_albedo)));
+  }
   commands.reset();
   for (auto& t : targets) device.destroy(t.image);
   device.destroy(ray_counter);

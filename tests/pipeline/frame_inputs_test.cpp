@@ -258,7 +258,94 @@ TEST_CASE("a glossy floor in a black furnace of radiance Le reflects Le times th
     // 3 sigma (12%) and 20% is 5 sigma; the mean over them has a standard error near 0.3%.
     CHECK(sum_got / sum_want == doctest::Approx(1.0).epsilon(0.015));
     CHECK(worst_rel < 0.2);
+
+    // Split into the two signals (glossy scenes' default), the diffuse lobe reflects exactly
+    // Le (1 - m)(1 - F_dielectric(n.v)) c (its weight depends on n.v only) and the GGX lobe the rest
+    // of the directional albedo. Same paths, so the same statistics for each part's mean.
+    const FrameInputs two =
+        render_frame_inputs(*device, scene, device->capabilities().ray_query, w, h, 0, spp, 1, 7, true);
+    double diffuse_got = 0.0, diffuse_want = 0.0, specular_got = 0.0, specular_want = 0.0;
+    for (std::uint32_t y = 0; y < h; ++y)
+      for (std::uint32_t x = 0; x < w; ++x) {
+        const std::size_t p = std::size_t(y) * w + x;
+        if (two.visibility[4 * p] == 0u || two.visibility[4 * p + 1] > 1u) continue;
+        const glm::vec2 ndc{2.0f * (x + 0.5f) / w - 1.0f, 1.0f - 2.0f * (y + 0.5f) / h};
+        const glm::vec3 d =
+            glm::normalize(glm::vec3(cam.forward) + ndc.x * glm::vec3(cam.right) + ndc.y * glm::vec3(cam.up));
+        const double mu = -d.y;
+        const double f_dielectric = c.specular * (0.04 + 0.96 * std::pow(1.0 - mu, 5.0));
+        const double diffuse = le * (1.0 - c.metallic) * (1.0 - f_dielectric);
+        diffuse_want += diffuse;
+        specular_want += le * albedo_at(mu) - diffuse;
+        diffuse_got += two.illumination[4 * p + 1] * half_to_float(two.albedo[4 * p + 1]);
+        specular_got += two.specular[4 * p + 1] * half_to_float(two.specular_albedo[4 * p + 1]);
+      }
+    MESSAGE(std::string(c.name) << ": diffuse " << diffuse_got / compared << " (expected " << diffuse_want / compared
+                                << "), specular " << specular_got / compared << " (expected "
+                                << specular_want / compared << ")");
+    if (c.metallic == 1.0f)
+      CHECK(diffuse_got == 0.0);
+    else
+      CHECK(diffuse_got / diffuse_want == doctest::Approx(1.0).epsilon(0.015));
+    CHECK(specular_got / specular_want == doctest::Approx(1.0).epsilon(0.015));
   }
+}
+
+TEST_CASE(
+    "split signals: diffuse times its albedo plus specular times its albedo is the one-signal radiance, matte "
+    "surfaces have no specular signal, metals no diffuse one") {
+  ValidatedDevice device;
+  const auto scene = scene::builtin_scene("glossy", "static");
+  const std::uint32_t w = 40, h = 40, spp = 2;
+  const bool rq = device->capabilities().ray_query;
+  // The same seed: the same paths, only their light written to two images.
+  const FrameInputs one = render_frame_inputs(*device, scene, rq, w, h, 0, spp, 4, 7, false);
+  const FrameInputs two = render_frame_inputs(*device, scene, rq, w, h, 0, spp, 4, 7, true);
+  REQUIRE(one.visibility == two.visibility);
+  const auto albedo = [](const std::vector<std::uint16_t>& a, std::size_t i) {
+    return std::max(half_to_float(a[i]), 1e-3f);  // the path tracer's and composite's guard
+  };
+  int specular_pixels = 0, metal_pixels = 0, matte_pixels = 0;
+  double worst = 0.0;
+  for (std::size_t p = 0; p < std::size_t(w) * h; ++p) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::size_t i = 4 * p + c;
+      const double want = double(one.illumination[i]) * albedo(one.albedo, i);
+      const double got = double(two.illumination[i]) * albedo(two.albedo, i) +
+                         double(two.specular[i]) * albedo(two.specular_albedo, i);
+      // The path tracer divides by fp32 albedos, the test multiplies by the G-buffer's and the path
+      // tracer's fp16 copies (rounding: <= 2^-11 relative each), and the two sides round apart:
+      // <= 2^-10, plus a few fp32 roundings of the contributions (sum, share, difference).
+      worst = std::max(worst, std::abs(got - want) / std::max(want, 1e-3));
+    }
+    // illumination.a: the one-signal luminance, for the gradient.
+    CHECK(two.illumination[4 * p + 3] == doctest::Approx(luminance(&one.illumination[4 * p])).epsilon(1e-6));
+    const bool surface = one.visibility[4 * p] != 0u && one.visibility[4 * p] != 0xFFFFFFFFu;
+    if (!surface) continue;
+    const bool has_specular = two.specular[4 * p] + two.specular[4 * p + 1] + two.specular[4 * p + 2] > 0.0f;
+    const bool no_diffuse_lobe =
+        half_to_float(two.albedo[4 * p]) == 0.0f && half_to_float(two.albedo[4 * p + 1]) == 0.0f;
+    specular_pixels += has_specular;
+    if (no_diffuse_lobe) {
+      ++metal_pixels;
+      CHECK(two.illumination[4 * p] + two.illumination[4 * p + 1] + two.illumination[4 * p + 2] == 0.0f);
+    }
+    // A surface whose one-signal albedo equals its diffuse albedo has no GGX lobe.
+    if (one.albedo[4 * p] == two.albedo[4 * p] && one.albedo[4 * p + 1] == two.albedo[4 * p + 1] &&
+        one.albedo[4 * p + 2] == two.albedo[4 * p + 2]) {
+      ++matte_pixels;
+      CHECK_FALSE(has_specular);
+      CHECK(half_to_float(two.specular_albedo[4 * p]) == 1.0f);
+    }
+  }
+  MESSAGE("split vs one signal: worst relative difference "
+          << worst << "; " << specular_pixels << " pixels with a specular signal, " << metal_pixels << " metal, "
+          << matte_pixels << " matte");
+  CHECK(worst < std::ldexp(1.0, -10) + 1e-5);
+  // The scene has all three kinds: a metal floor, a glossy dielectric box, matte walls.
+  CHECK(metal_pixels > int(w * h) / 10);
+  CHECK(matte_pixels > int(w * h) / 10);
+  CHECK(specular_pixels > metal_pixels);
 }
 
 namespace {

@@ -4,13 +4,13 @@
 
 #include <string>
 
-#include "hal/error.hpp"
 #include "checked_record.hpp"
+#include "hal/error.hpp"
 #include "passes/compute_pass.hpp"
+#include "shaders/accumulate.hpp"
 #include "shaders/atrous.history.hpp"
 #include "shaders/atrous.plain.hpp"
-#include "shaders/composite.hpp"
-#include "shaders/gradient.hpp"
+#include "shaders/composite.one.hpp"
 #include "shaders/variance.hpp"
 #include "test_shaders.hpp"
 
@@ -95,9 +95,9 @@ TEST_CASE("PipelineCache takes a generated uniform struct for any variant with t
     return "";
   };
   // Another size: named with both shaders.
-  const std::string size = refusal(composite_uniforms::Params{}, variance);
-  CHECK(size.find("24 bytes in the shader, 16 in the C++ struct generated from 'composite'") != std::string::npos);
+  const std::string size = refusal(composite_one_uniforms::Params{}, variance);
+  CHECK(size.find("24 bytes in the shader, 16 in the C++ struct generated from 'composite.one'") != std::string::npos);
   // The same size, another member at the same place.
-  const std::string member = refusal(composite_uniforms::Params{}, gradient);
-  CHECK(member.find("member 2 is 'gradient_width' in the shader, 'exposure'") != std::string::npos);
+  const std::string member = refusal(composite_one_uniforms::Params{}, accumulate);
+  CHECK(member.find("member 2 is 'history_valid' in the shader, 'exposure'") != std::string::npos);
 }
