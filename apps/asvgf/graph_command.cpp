@@ -25,6 +25,7 @@ struct GraphOptions {
   std::string size = "128x128";
   int frame = 1;
   int atrous_iterations = 5;
+  bool specular_split = false;
   std::string dot;
 };
 
@@ -37,6 +38,7 @@ int run_graph(const GraphOptions& o) {
     return 2;
   }
   settings.denoise.atrous_iterations = o.atrous_iterations;
+  settings.specular_split = o.specular_split;
 
   const auto owned = hal::validate::wrap(std::make_unique<hal::record::RecordDevice>());
   hal::Device& device = *owned;
@@ -106,6 +108,8 @@ std::function<int()> add_graph_command(CLI::App& app) {
   cmd->add_option("--atrous-iterations", options->atrous_iterations, "A-trous iterations (svgf, asvgf)")
       ->check(CLI::Range(0, 16))
       ->capture_default_str();
+  cmd->add_flag("--specular-split", options->specular_split,
+                "On glossy scenes, diffuse and specular light in chains of their own");
   cmd->add_option("--dot", options->dot, "Also write the graph as Graphviz to this file");
   return [options] { return run_graph(*options); };
 }

@@ -96,8 +96,8 @@ std::vector<report::RunSpec> all_runs(std::uint32_t max_accumulation_spp) {
       [](report::RunSpec& s) { s.denoise.gradient_source = passes::GradientSource::Reprojected; });
   add("asvgf-nodemod", "A-SVGF filtering radiance with the albedo in it (--no-demodulation)", Method::Asvgf,
       [](report::RunSpec& s) { s.demodulate = false; });
-  add("asvgf-onesignal", "A-SVGF filtering diffuse and specular light as one signal (--no-specular-split)",
-      Method::Asvgf, [](report::RunSpec& s) { s.specular_split = false; });
+  add("asvgf-split", "A-SVGF filtering diffuse and specular light apart (--specular-split)", Method::Asvgf,
+      [](report::RunSpec& s) { s.specular_split = true; });
   add("asvgf-box9", "A-SVGF, the seed's 3x3 box kernel, 9 iterations", Method::Asvgf, [](report::RunSpec& s) {
     s.denoise.kernel = passes::AtrousKernel::Box;
     s.denoise.atrous_iterations = 9;
@@ -237,9 +237,9 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
                                  const std::filesystem::path& dir) {
   const auto start = std::chrono::steady_clock::now();
   const scene::Scene scene = load_scene(o.scene);
-  // Without glossy materials there is one signal anyway: a one-signal run would repeat its twin.
+  // Without glossy materials there is one signal anyway: a split run would repeat its twin.
   if (std::none_of(scene.materials.begin(), scene.materials.end(), [](const auto& m) { return m.glossy(); }))
-    std::erase_if(specs, [](const report::RunSpec& s) { return !s.specular_split; });
+    std::erase_if(specs, [](const report::RunSpec& s) { return s.specular_split; });
   const int frames = o.frames > 0 ? o.frames : scene.frame_count;
   const render::RenderSettings base = render_settings(o.scene);
 

@@ -53,8 +53,8 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
       ->capture_default_str();
   cmd.add_flag("--no-demodulation", o.no_demodulation,
                "Denoise radiance with the albedo in it instead of radiance / albedo (does the filter blur textures?)");
-  cmd.add_flag("--no-specular-split", o.no_specular_split,
-               "On glossy scenes, denoise one signal instead of diffuse and specular light apart");
+  cmd.add_flag("--specular-split", o.specular_split,
+               "On glossy scenes, denoise diffuse and specular light apart, each with its own histories");
   add_denoise_options(cmd, o);
 }
 
@@ -90,7 +90,7 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
       ->check(CLI::Range(0, 15))
       ->capture_default_str();
   cmd.add_option("--specular-atrous-iterations", d.specular_atrous_iterations,
-                 "A-trous iterations over the specular signal (glossy scenes; Q2RTX 3)")
+                 "A-trous iterations over the specular signal (--specular-split; Q2RTX 3)")
       ->check(CLI::Range(0, 16))
       ->capture_default_str();
 }
@@ -124,7 +124,7 @@ render::RenderSettings render_settings(const SceneOptions& o) {
   s.seed = o.seed;
   s.denoise = o.denoise;
   s.demodulate = !o.no_demodulation;
-  s.specular_split = !o.no_specular_split;
+  s.specular_split = o.specular_split;
   if (o.software_bvh) s.ray_query = false;
   return s;
 }

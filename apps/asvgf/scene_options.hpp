@@ -26,7 +26,7 @@ struct SceneOptions {
   std::string kernel = "b3spline";
   std::string gradient_source = "reshaded";
   bool no_demodulation = false;  // --no-demodulation: filter radiance, albedo included
-  bool no_specular_split = false;  // --no-specular-split: one signal on glossy scenes too
+  bool specular_split = false;   // --specular-split: glossy scenes' diffuse and specular light filtered apart
 };
 
 // Registers --scene --animation --method --size --backend --device --software-bvh --validation

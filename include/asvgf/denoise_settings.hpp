@@ -7,7 +7,7 @@
 //   gradient_iterations 3: Q2RTX (a-trous over the gradient at 1/3 resolution).
 //   history_cap 32: Falcor's SVGF (Q2RTX caps at 256 with alpha_min 0.02, moments alpha 0.01).
 //   adaptive on: A-SVGF (Schied, Peters, Dachsbacher 2018).
-//   specular_atrous_iterations 3: Q2RTX; measured best of 0-5 on `glossy` (docs/performance.md).
+//   specular_atrous_iterations 4: measured on `glossy` at 1080p (Q2RTX 3; docs/performance.md).
 #pragma once
 
 #include <cstdint>
@@ -39,9 +39,10 @@ struct DenoiseSettings {
   float exposure = 1.0f;                       // composite: multiplier before the tone curve
   Tonemap tonemap = Tonemap::Aces;             // composite: ACES fit (Narkowicz 2015)
   // A-trous iterations over the specular signal, where diffuse and specular light are filtered
-  // apart (glossy scenes): fewer than the diffuse chain's, as Q2RTX (flt_atrous_spec 3 against
-  // flt_atrous_hf 4): a reflection has detail that normals and depth do not predict.
-  int specular_atrous_iterations = 3;
+  // apart (--specular-split): Q2RTX filters its specular channel less than its diffuse one
+  // (flt_atrous_spec 3 against flt_atrous_hf 4), as a reflection has detail that normals and depth
+  // do not predict; 4 measured best of 2-5 at 1080p (3 at 128 and 256 px).
+  int specular_atrous_iterations = 4;
 };
 
 }  // namespace asvgf

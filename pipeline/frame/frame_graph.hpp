@@ -41,10 +41,11 @@ struct FrameConfig {
   // False (--no-demodulation): the denoiser filters radiance with the albedo in it, not
   // illumination = radiance / albedo (the seed's question: does filtering blur textures?).
   bool demodulate = true;
-  // On scenes with glossy materials, filter the light the primary surface's GGX lobe reflects apart
-  // from the rest, each with its own albedo and histories (ema, svgf, asvgf with re-shaded
-  // gradients, no AOVs). False (--no-specular-split): one signal, as on diffuse-only scenes.
-  bool specular_split = true;
+  // True (--specular-split): on scenes with glossy materials, filter the light the primary
+  // surface's GGX lobe reflects apart from the rest, each with its own albedo and histories (ema,
+  // svgf, asvgf with re-shaded gradients, no AOVs). Off by default: with surface-motion
+  // reprojection it does not lower the error at 1080p (docs/performance.md, "specular split").
+  bool specular_split = false;
 };
 
 // One frame's graph: the run's choices and what changes from frame to frame.

@@ -222,12 +222,13 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
   if (d.glossy_fraction <= 0) {
     out << "The scene has no glossy materials (try `--scene glossy`).\n\n";
   } else {
-    out << "The SVGF-family runs filter the light the primary surface's GGX lobe reflects apart from the rest "
-           "(as Q2RTX and NRD do), each divided by its own directional albedo (the GGX part from Karis's "
-           "split-sum fit) with histories of its own; `asvgf-onesignal` (`--no-specular-split`) filters them "
-           "as one signal. Both are reprojected along the surface's motion. A reflection moves with what it "
-           "reflects, not with the surface, so a history reprojected along the surface lags behind a moving "
-           "object or light (ghosting). relMSE over the pixels whose primary surface is glossy ("
+    out << "Diffuse and glossy reflection share one signal in `svgf` and `asvgf`: the radiance is divided by "
+           "the surface's directional albedo (its GGX part from Karis's split-sum fit); `asvgf-split` "
+           "(`--specular-split`) filters the light the GGX lobe reflects apart from the rest (as Q2RTX and NRD "
+           "do), each divided by its own albedo, with histories of its own. All are reprojected along the "
+           "surface's motion. A reflection moves with what it reflects, not with the surface, so a history "
+           "reprojected along the surface lags behind a moving object or light (ghosting). relMSE over the "
+           "pixels whose primary surface is glossy ("
         << g(100.0 * d.glossy_fraction) << "% of the pixels over all frames) and over the matte ones"
         << (d.change ? ", over all frames and from the change on (frame " + std::to_string(d.change->first) + ")" : "")
         << ":\n\n";

@@ -95,7 +95,7 @@ std::vector<const RunResult*> change_crop_runs(const ReportData& data) {
 
 std::vector<const RunResult*> glossy_crop_runs(const ReportData& data) {
   if (data.reference_glossy_crops.empty()) return {};
-  return runs_named(data, {"svgf", "asvgf", "asvgf-onesignal", "asvgf-nodemod"});
+  return runs_named(data, {"svgf", "asvgf", "asvgf-split", "asvgf-nodemod"});
 }
 
 Headline compute_headline(const ReportData& data) {

@@ -25,7 +25,7 @@ struct RunSpec {
   std::uint32_t spp = 1;
   passes::DenoiseSettings denoise;
   bool demodulate = true;  // false: the denoiser filters radiance, albedo included (--no-demodulation)
-  bool specular_split = true;  // false: one signal on glossy scenes too (--no-specular-split)
+  bool specular_split = false;  // glossy scenes: diffuse and specular filtered apart (--specular-split)
   bool accumulation() const { return method == frame::Method::Reference; }
   // Frames until the temporal history is saturated (alpha_eff = max(alpha, 1/n) reaches alpha);
   // 0 for methods without a history.
@@ -113,7 +113,7 @@ Headline compute_headline(const ReportData& data);
 const RunResult* find_run(const ReportData& data, const std::string& name);
 // The runs crops_change.png shows (ema-0.05, svgf, asvgf, those present; none without a change).
 std::vector<const RunResult*> change_crop_runs(const ReportData& data);
-// The runs crops_glossy.png shows (svgf, asvgf, asvgf-onesignal, asvgf-nodemod, those present); none: no such plot.
+// The runs crops_glossy.png shows (svgf, asvgf, asvgf-split, asvgf-nodemod, those present); none: no such plot.
 std::vector<const RunResult*> glossy_crop_runs(const ReportData& data);
 
 // Every pass any run timed, in execution order (the run with the most passes sets it).
