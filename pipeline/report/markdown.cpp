@@ -256,7 +256,8 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
   std::vector<std::string> groups;
   for (const auto& p : pass_columns(d))
     if (std::find(groups.begin(), groups.end(), group_of(p)) == groups.end()) groups.push_back(group_of(p));
-  out << "Median over the frames, in ms; `atrous` and `gradient_atrous` sum their iterations (report.csv has each)."
+  out << "Median over the frames, in ms; `atrous` and `gradient_atrous` sum their iterations, `specular` the "
+         "specular chain of `--specular-split` runs (report.csv has each pass)."
          "\n\n| run | frame |";
   for (const auto& p : groups) out << " " << p << " |";
   out << "\n| --- | --- |";
