@@ -240,6 +240,9 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
   // Without glossy materials there is one signal anyway: a split run would repeat its twin.
   if (std::none_of(scene.materials.begin(), scene.materials.end(), [](const auto& m) { return m.glossy(); }))
     std::erase_if(specs, [](const report::RunSpec& s) { return s.specular_split; });
+  if (specs.empty())
+    throw CLI::ValidationError(
+        "--methods", "the runs chosen need glossy materials (asvgf-split), and scene '" + scene.name + "' has none");
   const int frames = o.frames > 0 ? o.frames : scene.frame_count;
   const render::RenderSettings base = render_settings(o.scene);
 

@@ -54,7 +54,12 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_flag("--no-demodulation", o.no_demodulation,
                "Denoise radiance with the albedo in it instead of radiance / albedo (does the filter blur textures?)");
   cmd.add_flag("--specular-split", o.specular_split,
-               "On glossy scenes, denoise diffuse and specular light apart, each with its own histories");
+               "On glossy scenes, denoise diffuse and specular light apart, each with its own histories "
+               "(ema, svgf, asvgf with the re-shaded gradient; not with --aovs)");
+  cmd.add_option("--specular-atrous-iterations", o.denoise.specular_atrous_iterations,
+                 "A-trous iterations over the specular signal (--specular-split; Q2RTX 3)")
+      ->check(CLI::Range(0, 16))
+      ->capture_default_str();
   add_denoise_options(cmd, o);
 }
 
@@ -88,10 +93,6 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
       ->capture_default_str();
   cmd.add_option("--history-tap", d.history_tap, "A-trous iteration whose output feeds the colour history")
       ->check(CLI::Range(0, 15))
-      ->capture_default_str();
-  cmd.add_option("--specular-atrous-iterations", d.specular_atrous_iterations,
-                 "A-trous iterations over the specular signal (--specular-split; Q2RTX 3)")
-      ->check(CLI::Range(0, 16))
       ->capture_default_str();
 }
 

@@ -31,7 +31,7 @@ void main() {
   vec2 prev = texelFetch(gradient_prev, s, 0).xy;
   vec2 result = vec2(0.0);
   // l_prev < 0: last frame's sample was missing (luminance_in_alpha).
-  if (prev.y >= 0.0 && prev.y < 9.0 && !not_finite(prev.x) && prev.x >= 0.0) {
+  if (prev.y >= 0.0 && prev.y < 9.0 && !not_finite(prev.x) && (params.luminance_in_alpha == 0u || prev.x >= 0.0)) {
     int index = int(prev.y);
     ivec2 p = 3 * s + ivec2(index % 3, index / 3);
     if (inside(p, params.width, params.height)) {

@@ -50,7 +50,8 @@ layout(set = 0, binding = 13) uniform utexture2D gradient_seeds;
 layout(set = 0, binding = 14, std430) buffer RayCounter { uint count; } ray_counter;
 #ifdef SPLIT_SPECULAR
 layout(set = 0, binding = 15, rgba32f) writeonly uniform image2D specular;
-// The GGX lobe's albedo of the pixel's own surface (carried gradient samples shade another point),
+// The GGX lobe's albedo of the pixel's own surface (carried gradient samples shade another point;
+// 0 without a surface or a GGX lobe, so that specular light the filters spread there stays dark),
 // what composite re-modulates the filtered specular signal by; here and not in the gbuffer, whose
 // storage images are at WebGPU's limit of 4.
 layout(set = 0, binding = 16, rgba16f) writeonly uniform image2D specular_albedo;
@@ -301,7 +302,7 @@ void shade_pixel(ivec2 p) {
   LOAD_CAMERA(cam, params.camera);
   uvec4 vis = texelFetch(visibility, p, 0);
 #ifdef SPLIT_SPECULAR
-  vec3 own_specular_albedo = vec3(1.0);
+  vec3 own_specular_albedo = vec3(0.0);
   if (vis.x != 0u && vis.x != 0xFFFFFFFFu && params.demodulate != 0u) {
     Triangle t;
     vec2 b;
@@ -352,8 +353,16 @@ void shade_pixel(ivec2 p) {
   }
   vec3 one_signal = radiance / max(demodulation, vec3(kAlbedoGuard));
 #ifdef SPLIT_SPECULAR
-  // Rounding can leave the difference a few ulps below 0 where the GGX lobe reflects everything.
-  vec3 diffuse_radiance = max(radiance - specular_radiance, vec3(0.0));
+  // Rounding can leave the difference a few ulps below 0 where the GGX lobe reflects everything. A
+  // non-finite sample stays non-finite in both signals (max() could turn NaN into 0), so that each
+  // chain's temporal pass drops it.
+  vec3 diffuse_radiance = radiance - specular_radiance;
+  if (any_not_finite(radiance) || any_not_finite(specular_radiance)) {
+    diffuse_radiance = radiance;
+    specular_radiance = radiance;
+  } else {
+    diffuse_radiance = max(diffuse_radiance, vec3(0.0));
+  }
   // The gradient passes read a non-finite sample's luminance as -1: missing.
   float one_signal_luminance = any_not_finite(one_signal) ? -1.0 : luminance(clamp_sample(one_signal));
   imageStore(illumination, p,

@@ -90,11 +90,12 @@ vec3 demodulation_albedo(uint tri, vec2 bary, float n_v) {
 }
 
 // The two albedos when the denoiser filters diffuse and specular light apart: the diffuse lobe's
-// (a Lambertian surface's albedo) and the GGX lobe's directional albedo (1 where there is no GGX
-// lobe: its signal is 0 there). Both 1 on emitters, as above.
+// (a Lambertian surface's albedo) and the GGX lobe's directional albedo (0 where there is no GGX
+// lobe: its signal is 0 there, and specular light the filters spread onto it must not show). 1 and
+// 0 on emitters, whose emission is the diffuse signal, as above.
 void split_demodulation_albedos(uint tri, vec2 bary, float n_v, out vec3 diffuse, out vec3 specular) {
   diffuse = vec3(1.0);
-  specular = vec3(1.0);
+  specular = vec3(0.0);
   if (materials.values[triangles.values[tri].material].emission.a > 0.0) return;
   diffuse = surface_albedo(tri, bary);
   if (!triangle_glossy(tri)) return;

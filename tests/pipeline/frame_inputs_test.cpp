@@ -259,7 +259,7 @@ TEST_CASE("a glossy floor in a black furnace of radiance Le reflects Le times th
     CHECK(sum_got / sum_want == doctest::Approx(1.0).epsilon(0.015));
     CHECK(worst_rel < 0.2);
 
-    // Split into the two signals (glossy scenes' default), the diffuse lobe reflects exactly
+    // Split into the two signals (--specular-split), the diffuse lobe reflects exactly
     // Le (1 - m)(1 - F_dielectric(n.v)) c (its weight depends on n.v only) and the GGX lobe the rest
     // of the directional albedo. Same paths, so the same statistics for each part's mean.
     const FrameInputs two =
@@ -335,7 +335,7 @@ TEST_CASE(
         one.albedo[4 * p + 2] == two.albedo[4 * p + 2]) {
       ++matte_pixels;
       CHECK_FALSE(has_specular);
-      CHECK(half_to_float(two.specular_albedo[4 * p]) == 1.0f);
+      CHECK(half_to_float(two.specular_albedo[4 * p]) == 0.0f);
     }
   }
   MESSAGE("split vs one signal: worst relative difference "
