@@ -94,6 +94,11 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   passes::add_pathtrace(g, pipelines_, scene, vbuffer, gradients ? gradient_seeds : std::nullopt, illumination, seeds,
                         rays, {s.frame, s.seed, s.max_bounces, s.spp, s.demodulate}, w, h, "pathtrace",
                         split ? std::optional(passes::SpecularTargets{*specular, *specular_albedo}) : std::nullopt);
+  std::optional<ResourceId> specular_motion;
+  if (split) {
+    specular_motion = g.add_image("specular_motion", w, h, F::RGBA32F);
+    passes::add_specular_motion(g, pipelines_, scene, depth_normal, motion, *specular, *specular_motion, w, h);
+  }
   ResourceId input = illumination;
   if (s.method == Method::Reference) {
     const ResourceId accumulation = g.add_image("accumulation", w, h, F::RGBA32F, Lifetime::Persistent);
@@ -103,11 +108,12 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const passes::Filter filter = s.method == Method::Raw || s.method == Method::Reference ? passes::Filter::None
                                 : s.method == Method::Ema                                ? passes::Filter::Temporal
                                                           : passes::Filter::Spatiotemporal;
-  const passes::DenoiserOutputs denoised = passes::add_denoiser(
-      g, pipelines_,
-      {input, motion, depth_normal, albedo, counters, hdr, display,
-       adaptive ? std::optional(gradient_prev) : std::nullopt, gradients ? "" : not_moved, specular, specular_albedo},
-      denoise, filter);
+  const passes::DenoiserOutputs denoised =
+      passes::add_denoiser(g, pipelines_,
+                           {input, motion, depth_normal, albedo, counters, hdr, display,
+                            adaptive ? std::optional(gradient_prev) : std::nullopt, gradients ? "" : not_moved,
+                            specular, specular_albedo, specular_motion},
+                           denoise, filter);
   g.output(hdr, hal::State::CopySrc);
   g.output(display, hal::State::CopySrc);
 

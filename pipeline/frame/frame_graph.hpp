@@ -43,8 +43,9 @@ struct FrameConfig {
   bool demodulate = true;
   // True (--specular-split): on scenes with glossy materials, filter the light the primary
   // surface's GGX lobe reflects apart from the rest, each with its own albedo and histories (ema,
-  // svgf, asvgf with re-shaded gradients, no AOVs). Off by default: with surface-motion
-  // reprojection it does not lower the error at 1080p (docs/performance.md, "specular split").
+  // svgf, asvgf with re-shaded gradients, no AOVs), the specular history reprojected through the
+  // reflection's virtual point. Off by default: it pays when the camera moves and costs a little
+  // when it does not (docs/performance.md, steps 7 and 8).
   bool specular_split = false;
 };
 

@@ -21,7 +21,8 @@ struct Chain {
 };
 Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId signal,
                 const std::string& prefix, const DenoiserInputs& in, std::optional<graph::ResourceId> gradient,
-                const DenoiseSettings& s, Filter filter) {
+                const DenoiseSettings& s, Filter filter,
+                std::optional<graph::ResourceId> virtual_motion = std::nullopt) {
   using F = hal::Format;
   using graph::Lifetime;
   using graph::ResourceId;
@@ -33,9 +34,10 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   const bool spatial = filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
   // Without a spatial filter the temporal result is itself next frame's colour history.
   c.integrated = spatial ? graph.add_image(prefix + "integrated", w, h, F::RGBA16F) : c.color_history;
-  add_temporal(
-      graph, pipelines,
-      {signal, in.motion, in.depth_normal, c.color_history, c.moments, c.integrated, in.counters, gradient, prefix}, s);
+  add_temporal(graph, pipelines,
+               {signal, virtual_motion.value_or(in.motion), in.depth_normal, c.color_history, c.moments, c.integrated,
+                in.counters, gradient, prefix, virtual_motion.has_value()},
+               s);
   c.filtered = c.integrated;
   c.variance = c.integrated;
   if (!spatial) return c;
@@ -102,7 +104,8 @@ DenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipelines
       specular.atrous_iterations = s.specular_atrous_iterations;
       specular.history_tap = std::min(s.history_tap, std::max(0, s.specular_atrous_iterations - 1));
       out.specular =
-          add_chain(graph, pipelines, *in.specular, "specular.", in, out.gradient, specular, filter).filtered;
+          add_chain(graph, pipelines, *in.specular, "specular.", in, out.gradient, specular, filter, in.specular_motion)
+              .filtered;
     }
   } else {
     out.specular = in.specular;

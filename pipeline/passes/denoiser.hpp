@@ -39,6 +39,9 @@ struct DenoiserInputs {
   // divided by `specular_albedo`, RGBA16F) gets a chain of its own: passes and histories named
   // "specular.*", the same gradient; composite adds it re-modulated.
   std::optional<graph::ResourceId> specular, specular_albedo;
+  // With `specular`: its history's motion through the reflection's virtual point (specular_motion);
+  // absent, the specular history follows `motion`.
+  std::optional<graph::ResourceId> specular_motion;
 };
 
 struct DenoiserOutputs {

@@ -16,6 +16,7 @@
 #include "shaders/pathtrace.software_gradients.hpp"
 #include "shaders/pathtrace.software_gradients_split.hpp"
 #include "shaders/pathtrace.software_split.hpp"
+#include "shaders/specular_motion.hpp"
 
 namespace asvgf::passes {
 namespace {
@@ -174,6 +175,19 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
                     {"gradient_prev", t.gradient_prev}},
                    to_bytes(resolve), {sw, sh, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
+}
+
+void add_specular_motion(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                         graph::ResourceId depth_normal, graph::ResourceId motion, graph::ResourceId specular,
+                         graph::ResourceId target, std::uint32_t width, std::uint32_t height) {
+  using Params = shaders::specular_motion_uniforms::Params;
+  using Camera = shaders::specular_motion_uniforms::Camera;
+  const Params params{
+      uniform_camera<Camera>(scene.camera), uniform_camera<Camera>(scene.previous_camera), width, height, 0, 0};
+  add_compute_pass(
+      graph, "specular_motion", shaders::specular_motion, pipelines.get<Params>(shaders::specular_motion),
+      {{"depth_normal", depth_normal}, {"motion", motion}, {"specular", specular}, {"specular_motion", target}},
+      to_bytes(params), {width, height, 1});
 }
 
 void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId illumination,

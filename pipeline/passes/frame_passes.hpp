@@ -68,6 +68,13 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
                          const GradientSelectTargets& targets, std::uint32_t frame, std::uint32_t width,
                          std::uint32_t height, const std::string& skip_reason);
 
+// The specular history's motion through each pixel's reflection (shaders/frame/specular_motion.comp):
+// reads depth_normal, motion and pathtrace's split `specular` (a: the reflected ray's length), writes
+// `target` (RGBA32F, xy).
+void add_specular_motion(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                         graph::ResourceId depth_normal, graph::ResourceId motion, graph::ResourceId specular,
+                         graph::ResourceId target, std::uint32_t width, std::uint32_t height);
+
 // Running mean of `illumination` into the persistent `accumulation` (restarted when !history_valid).
 void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId illumination,
                     graph::ResourceId accumulation, bool history_valid, std::uint32_t width, std::uint32_t height);

@@ -7,7 +7,9 @@
 
 #include "graph/graph_runtime.hpp"
 #include "shaders/temporal.adaptive.hpp"
+#include "shaders/temporal.adaptive_virtual.hpp"
 #include "shaders/temporal.constant.hpp"
+#include "shaders/temporal.constant_virtual.hpp"
 
 namespace asvgf::passes {
 namespace {
@@ -27,7 +29,10 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
     u.gradient_width = g.width;
     u.gradient_height = g.height;
   }
-  const hal::ShaderInfo* shader = adaptive ? &asvgf::shaders::temporal_adaptive : &asvgf::shaders::temporal_constant;
+  const hal::ShaderInfo* shader =
+      r.virtual_motion
+          ? (adaptive ? &asvgf::shaders::temporal_adaptive_virtual : &asvgf::shaders::temporal_constant_virtual)
+          : (adaptive ? &asvgf::shaders::temporal_adaptive : &asvgf::shaders::temporal_constant);
   const hal::PipelineHandle pipeline = pipelines.get<Uniforms>(*shader);
   std::vector<Binding> bindings{{"illumination", r.illumination},
                                 {"motion", r.motion},

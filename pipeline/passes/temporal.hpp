@@ -23,6 +23,7 @@ struct TemporalResources {
   graph::ResourceId counters = 0;       // read-written SanitizeCounters buffer
   std::optional<graph::ResourceId> gradient;  // read: 1/3 res RGBA16F (delta^, Delta^); adaptive alpha
   std::string prefix;                         // of the pass name: "specular." for the second signal
+  bool virtual_motion = false;  // `motion` goes through reflections: loose depth test (specular_motion.comp)
 };
 // Adds "<prefix>temporal". The adaptive variant is used when settings.adaptive and a gradient is given.
 // Histories not valid this frame (first frame, GraphRuntime::reset_histories) reset every pixel.

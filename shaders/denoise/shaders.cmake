@@ -1,7 +1,8 @@
 # Denoiser passes (A-SVGF on SVGF); included by shaders/CMakeLists.txt.
 asvgf_add_shader(gradient SOURCE denoise/gradient.comp)
 asvgf_add_shader(gradient_atrous SOURCE denoise/gradient_atrous.comp)
-asvgf_add_shader(temporal SOURCE denoise/temporal.comp VARIANTS constant adaptive=ADAPTIVE)
+asvgf_add_shader(temporal SOURCE denoise/temporal.comp
+                 VARIANTS constant adaptive=ADAPTIVE constant_virtual=VIRTUAL_MOTION adaptive_virtual=ADAPTIVE,VIRTUAL_MOTION)
 asvgf_add_shader(variance SOURCE denoise/variance.comp)
 asvgf_add_shader(atrous SOURCE denoise/atrous.comp VARIANTS plain history=HISTORY)
 asvgf_add_shader(composite SOURCE denoise/composite.comp VARIANTS one split=SPLIT)

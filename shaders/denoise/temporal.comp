@@ -76,7 +76,15 @@ History reproject(ivec2 p, Surface cur) {
     if (w <= 0.0) continue;
     vec4 mq = texelFetch(prev_moments, q, 0);
     if (!(mq.z > 0.0)) continue;
+#ifdef VIRTUAL_MOTION
+    // Through a reflection's virtual point the history lies on another part of the reflector: its
+    // depth differs with the distance moved, so only the normal (flat reflectors) and a loose depth
+    // bound (no other object) are tested.
+    Surface before = surface_from(texelFetch(prev_depth_normal, q, 0));
+    if (!hit(before) || abs(cur.z - before.z) > 0.1 * cur.z || dot(cur.n, before.n) < kReprojNormalCos) continue;
+#else
     if (!reprojection_consistent(cur, surface_from(texelFetch(prev_depth_normal, q, 0)))) continue;
+#endif
     h.color += w * texelFetch(prev_color, q, 0).rgb;
     h.moments += w * mq.xy;
     h.len += w * mq.z;

@@ -58,6 +58,10 @@ layout(set = 0, binding = 16, rgba16f) writeonly uniform image2D specular_albedo
 #endif
 
 uint rays_traced = 0u;
+// How far the first bounce's ray went when the GGX lobe chose it (-1: it left the scene, 0: the
+// diffuse lobe chose it or there was no bounce): specular.a, for the specular history's
+// reprojection through the reflection's virtual point.
+float first_specular_distance = 0.0;
 
 Camera cam;
 const float kAlbedoGuard = 1e-3;
@@ -237,6 +241,7 @@ vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 v, vec3 albedo, vec3 emission, in
       float u0 = next_random(state);
       float u1 = next_random(state);
       float u2 = next_random(state);
+      if (bounce == 0u) first_specular_distance = u0 < glossy_lobe_probability(vertex.model, vertex.v.z) ? -1.0 : 0.0;
       vec3 l = glossy_sample(vertex.model, vertex.v, u0, u1, u2);
       if (l.z <= 0.0) break;
       vec3 f_cos_specular;
@@ -253,6 +258,8 @@ vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 v, vec3 albedo, vec3 emission, in
     Hit h = trace_closest(o, dir, 0.0, 1e30, tri);
     float t_sphere;
     int sphere = hit_sphere_lights(o, dir, 0.0, h.hit ? h.t : 1e30, params.sphere_count, t_sphere);
+    if (bounce == 0u && first_specular_distance < 0.0)
+      first_specular_distance = sphere >= 0 ? t_sphere : h.hit ? h.t : -1.0;
     if (sphere >= 0) {
       Light l = load_light(uint(sphere));
       float pdf_light = l.pdf * sphere_cone_pdf(o, l.position, l.radius);
@@ -367,7 +374,7 @@ void shade_pixel(ivec2 p) {
   float one_signal_luminance = any_not_finite(one_signal) ? -1.0 : luminance(clamp_sample(one_signal));
   imageStore(illumination, p,
              vec4(diffuse_radiance / max(diffuse_albedo, vec3(kAlbedoGuard)), one_signal_luminance));
-  imageStore(specular, p, vec4(specular_radiance / max(specular_albedo, vec3(kAlbedoGuard)), 0.0));
+  imageStore(specular, p, vec4(specular_radiance / max(specular_albedo, vec3(kAlbedoGuard)), first_specular_distance));
 #else
   imageStore(illumination, p, vec4(one_signal, 0.0));
 #endif

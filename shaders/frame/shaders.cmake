@@ -16,6 +16,7 @@ asvgf_add_shader(gradient_select SOURCE frame/gradient_select.comp)
 asvgf_add_shader(gradient_resolve SOURCE frame/gradient_resolve.comp)
 asvgf_add_shader(accumulate SOURCE frame/accumulate.comp)
 asvgf_add_shader(debug_view SOURCE frame/debug_view.comp)
+asvgf_add_shader(specular_motion SOURCE frame/specular_motion.comp)
 # Not a frame pass: the benchmark's bandwidth measurement.
 asvgf_add_shader(bandwidth_copy SOURCE frame/bandwidth_copy.comp)
 asvgf_add_shader(export_aovs SOURCE frame/export_aovs.comp)

@@ -17,7 +17,7 @@ struct FrameInputs {
   std::vector<std::uint16_t> albedo;                     // 4 fp16 per pixel
   // With `split`: pathtrace's second signal and its albedo; `illumination` and `albedo` are then
   // the diffuse ones.
-  std::vector<float> specular;
+  std::vector<float> specular, specular_motion;  // specular.a: the first specular ray's length
   std::vector<std::uint16_t> specular_albedo;
 };
 
@@ -37,10 +37,10 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
     hal::Format format;
     hal::ImageHandle image;
   };
-  Target targets[] = {{"visibility", hal::Format::RGBA32Uint, {}},  {"depth_normal", hal::Format::RGBA32F, {}},
-                      {"motion", hal::Format::RGBA32F, {}},         {"albedo", hal::Format::RGBA16F, {}},
-                      {"illumination", hal::Format::RGBA32F, {}},   {"specular", hal::Format::RGBA32F, {}},
-                      {"specular_albedo", hal::Format::RGBA16F, {}}};
+  Target targets[] = {{"visibility", hal::Format::RGBA32Uint, {}},   {"depth_normal", hal::Format::RGBA32F, {}},
+                      {"motion", hal::Format::RGBA32F, {}},          {"albedo", hal::Format::RGBA16F, {}},
+                      {"illumination", hal::Format::RGBA32F, {}},    {"specular", hal::Format::RGBA32F, {}},
+                      {"specular_albedo", hal::Format::RGBA16F, {}}, {"specular_motion", hal::Format::RGBA32F, {}}};
   for (auto& t : targets) t.image = device.create_image({t.name, width, height, t.format, usage});
   const auto ray_counter = device.create_buffer({"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst});
   const std::uint32_t zeros[4] = {};
@@ -51,8 +51,8 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
     if (f < frame) continue;  // only the last frame is rendered; earlier updates set "previous"
     graph::RenderGraph g;
     const auto scene_in = passes::import_scene(g, gpu, width, height);
-    const int count = split ? 7 : 5;
-    graph::ResourceId ids[7];
+    const int count = split ? 8 : 5;
+    graph::ResourceId ids[8];
     for (int i = 0; i < count; ++i)
       ids[i] = g.import(targets[i].name, targets[i].image, hal::State::Undefined, width, height);
     const auto seeds = g.add_image("rng_seed", width, height, hal::Format::R32Uint);
@@ -61,6 +61,7 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
     passes::add_pathtrace(g, pipelines, scene_in, ids[0], std::nullopt, ids[4], seeds, rays,
                           {static_cast<std::uint32_t>(frame), seed, max_bounces, spp}, width, height, "pathtrace",
                           split ? std::optional(passes::SpecularTargets{ids[5], ids[6]}) : std::nullopt);
+    if (split) passes::add_specular_motion(g, pipelines, scene_in, ids[1], ids[2], ids[5], ids[7], width, height);
     for (int i = 0; i < count; ++i) g.output(ids[i], hal::State::CopySrc);
     auto compiled = runtime.compile(g);
     runtime.execute(compiled, *commands);
@@ -84,6 +85,8 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
   if (split) {
     out.specular.resize(n);
     out.specular_albedo.resize(n);
+    out.specular_motion.resize(n);
+    device.read_image(targets[7].image, std::as_writable_bytes(std::span(out.specular_motion)));
     device.read_image(targets[5].image, std::as_writable_bytes(std::span(out.specular)));
     device.read_image(targets[6].image, std::as_writable_bytes(std::span(out.specular_albedo)));
   }

@@ -396,6 +396,48 @@ TEST_CASE("motion vectors are right for a known camera move and a known object m
     CHECK(n > int(w * h) / 2);
     CHECK(worst < 2e-3);
   }
+  SUBCASE("camera move, the specular history through the reflection's virtual point") {
+    // The metal floor reflects the room: its specular history lies where last frame's camera saw the
+    // virtual image, on the view ray at the primary distance plus the reflected ray's length.
+    auto scene = scene::builtin_scene("glossy", "static");
+    auto c1 = scene.camera[0].value;
+    c1.position += glm::vec3(0.2f, 0.05f, 0.1f);
+    scene.camera.push_back({1.0f, c1});
+    const FrameInputs in =
+        render_frame_inputs(*device, scene, device->capabilities().ray_query, w, h, 1, 1, 4, 7, true);
+    const auto prev = render::make_camera(scene.camera[0].value, w, h);
+    const auto cur = render::make_camera(c1, w, h);
+    double worst = 0.0, apart = 0.0;
+    int virtual_pixels = 0, surface_pixels = 0;
+    for (std::uint32_t y = 0; y < h; ++y)
+      for (std::uint32_t x = 0; x < w; ++x) {
+        const std::size_t p = std::size_t(y) * w + x;
+        if (in.visibility[4 * p] == 0u || in.visibility[4 * p] == 0xFFFFFFFFu) continue;
+        const glm::vec2 got{in.specular_motion[4 * p], in.specular_motion[4 * p + 1]};
+        const glm::vec2 surface{in.motion[4 * p], in.motion[4 * p + 1]};
+        const float reflected = in.specular[4 * p + 3];
+        if (reflected <= 0.0f) {  // no specular ray, or it left the scene (at infinity)
+          if (reflected == 0.0f) {
+            CHECK(got == surface);
+            ++surface_pixels;
+          }
+          continue;
+        }
+        const glm::vec3 X = world_point(cur, x, y, in.depth_normal[4 * p], w, h);
+        const glm::vec3 eye(cur.position);
+        const glm::vec3 virtual_point = eye + glm::normalize(X - eye) * (glm::length(X - eye) + reflected);
+        const glm::vec2 expected = project(prev, virtual_point, w, h) - glm::vec2(x + 0.5f, y + 0.5f);
+        worst = std::max(worst, double(glm::length(got - expected)));
+        apart = std::max(apart, double(glm::length(got - surface)));
+        ++virtual_pixels;
+      }
+    MESSAGE(virtual_pixels << " pixels through a reflection (up to " << apart << " px from the surface's motion), "
+                           << surface_pixels << " with the surface's; worst error " << worst << " px");
+    CHECK(virtual_pixels > 60);  // the metal floor and part of the lacquer box (of 1280)
+    CHECK(surface_pixels > int(w * h) / 10);
+    CHECK(apart > 0.5);  // the camera move separates the two
+    CHECK(worst < 2e-3);
+  }
   SUBCASE("object move") {
     const auto scene = scene::builtin_scene("cornell", "boxes-move");
     const int frame = 5;  // the short box slides between frames 3 and 7
