@@ -59,7 +59,11 @@ struct History {
 History reproject(ivec2 p, Surface cur) {
   History h = History(vec3(0.0), vec2(0.0), 0.0, false);
   if (params.history_valid == 0u || !hit(cur)) return h;
-  vec2 prev = vec2(p) + 0.5 + texelFetch(motion, p, 0).xy;
+  vec4 mv = texelFetch(motion, p, 0);
+  vec2 prev = vec2(p) + 0.5 + mv.xy;
+#ifdef VIRTUAL_MOTION
+  bool through_reflection = mv.z > 0.5;
+#endif
   if (not_finite(prev.x) || not_finite(prev.y)) return h;
   vec2 pos = prev - 0.5;
   vec2 base = floor(pos);
@@ -76,14 +80,18 @@ History reproject(ivec2 p, Surface cur) {
     if (w <= 0.0) continue;
     vec4 mq = texelFetch(prev_moments, q, 0);
     if (!(mq.z > 0.0)) continue;
-#ifdef VIRTUAL_MOTION
-    // Through a reflection's virtual point the history lies on another part of the reflector: its
-    // depth differs with the distance moved, so only the normal (flat reflectors) and a loose depth
-    // bound (no other object) are tested.
     Surface before = surface_from(texelFetch(prev_depth_normal, q, 0));
-    if (!hit(before) || abs(cur.z - before.z) > 0.1 * cur.z || dot(cur.n, before.n) < kReprojNormalCos) continue;
+#ifdef VIRTUAL_MOTION
+    // Moved through a reflection's virtual point (motion.z = 1, specular_motion.comp), the history
+    // lies on another part of the reflector, whose depth differs with the distance moved: only the
+    // normal (flat reflectors) and a loose depth bound are tested there.
+    if (through_reflection) {
+      if (!hit(before) || abs(cur.z - before.z) > 0.1 * cur.z || dot(cur.n, before.n) < kReprojNormalCos) continue;
+    } else if (!reprojection_consistent(cur, before)) {
+      continue;
+    }
 #else
-    if (!reprojection_consistent(cur, surface_from(texelFetch(prev_depth_normal, q, 0)))) continue;
+    if (!reprojection_consistent(cur, before)) continue;
 #endif
     h.color += w * texelFetch(prev_color, q, 0).rgb;
     h.moments += w * mq.xy;

@@ -243,10 +243,16 @@ vec3 trace_path(uint tri, vec2 b, vec3 n, vec3 v, vec3 albedo, vec3 emission, in
       float u2 = next_random(state);
       if (bounce == 0u) first_specular_distance = u0 < glossy_lobe_probability(vertex.model, vertex.v.z) ? -1.0 : 0.0;
       vec3 l = glossy_sample(vertex.model, vertex.v, u0, u1, u2);
-      if (l.z <= 0.0) break;
+      if (l.z <= 0.0) {
+        if (bounce == 0u) first_specular_distance = 0.0;  // no ray: the surface's motion
+        break;
+      }
       vec3 f_cos_specular;
       vec3 f_cos = glossy_f_cos(vertex.model, vertex.v, l, pdf_bsdf, f_cos_specular);
-      if (pdf_bsdf <= 0.0) break;
+      if (pdf_bsdf <= 0.0) {
+        if (bounce == 0u) first_specular_distance = 0.0;
+        break;
+      }
       dir = normalize(l.x * vertex.t + l.y * vertex.b + l.z * n);
       throughput *= f_cos / pdf_bsdf;
       if (bounce == 0u)

@@ -4,7 +4,8 @@
 // point with last frame's camera follows the reflection as the camera moves, where the surface's
 // motion vector drags it along the floor. Pixels whose first bounce took the diffuse lobe, and
 // those without a surface, keep the surface's motion. Exact for static flat reflectors and a moving
-// camera; moving reflected objects still need the gradient.
+// camera; moving reflected objects still need the gradient. z = 1 marks the pixels moved through a
+// reflection: only those get the specular temporal pass's looser history test.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -48,7 +49,7 @@ void main() {
       prev_point = prev_cam.position.xyz + d;  // reflected sky: at infinity, moves with rotation only
     }
     vec3 prev = camera_project(prev_cam, prev_point, params.width, params.height);
-    if (prev.z > 0.0) mv.xy = prev.xy - centre;
+    if (prev.z > 0.0) mv = vec4(prev.xy - centre, 1.0, 0.0);
   }
   imageStore(specular_motion, p, mv);
 }

@@ -72,23 +72,19 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
   out.width = width;
   out.height = height;
   const std::size_t n = std::size_t(width) * height * 4;
-  out.visibility.resize(n);
-  out.depth_normal.resize(n);
-  out.motion.resize(n);
-  out.albedo.resize(n);
-  out.illumination.resize(n);
-  device.read_image(targets[0].image, std::as_writable_bytes(std::span(out.visibility)));
-  device.read_image(targets[1].image, std::as_writable_bytes(std::span(out.depth_normal)));
-  device.read_image(targets[2].image, std::as_writable_bytes(std::span(out.motion)));
-  device.read_image(targets[3].image, std::as_writable_bytes(std::span(out.albedo)));
-  device.read_image(targets[4].image, std::as_writable_bytes(std::span(out.illumination)));
+  auto read = [&](int target, auto& values) {
+    values.resize(n);
+    device.read_image(targets[target].image, std::as_writable_bytes(std::span(values)));
+  };
+  read(0, out.visibility);
+  read(1, out.depth_normal);
+  read(2, out.motion);
+  read(3, out.albedo);
+  read(4, out.illumination);
   if (split) {
-    out.specular.resize(n);
-    out.specular_albedo.resize(n);
-    out.specular_motion.resize(n);
-    device.read_image(targets[7].image, std::as_writable_bytes(std::span(out.specular_motion)));
-    device.read_image(targets[5].image, std::as_writable_bytes(std::span(out.specular)));
-    device.read_image(targets[6].image, std::as_writable_bytes(std::span(out.specular_albedo)));
+    read(5, out.specular);
+    read(6, out.specular_albedo);
+    read(7, out.specular_motion);
   }
   commands.reset();
   for (auto& t : targets) device.destroy(t.image);

@@ -419,6 +419,7 @@ TEST_CASE("motion vectors are right for a known camera move and a known object m
         if (reflected <= 0.0f) {  // no specular ray, or it left the scene (at infinity)
           if (reflected == 0.0f) {
             CHECK(got == surface);
+            CHECK(in.specular_motion[4 * p + 2] == 0.0f);
             ++surface_pixels;
           }
           continue;
@@ -429,6 +430,7 @@ TEST_CASE("motion vectors are right for a known camera move and a known object m
         const glm::vec2 expected = project(prev, virtual_point, w, h) - glm::vec2(x + 0.5f, y + 0.5f);
         worst = std::max(worst, double(glm::length(got - expected)));
         apart = std::max(apart, double(glm::length(got - surface)));
+        CHECK(in.specular_motion[4 * p + 2] == 1.0f);  // marked: the temporal pass's looser test
         ++virtual_pixels;
       }
     MESSAGE(virtual_pixels << " pixels through a reflection (up to " << apart << " px from the surface's motion), "
