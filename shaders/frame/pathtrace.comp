@@ -314,17 +314,7 @@ void primary_surface(uvec4 vis, out Triangle t, out vec2 b, out vec3 n, out vec3
 void shade_pixel(ivec2 p) {
   LOAD_CAMERA(cam, params.camera);
   uvec4 vis = texelFetch(visibility, p, 0);
-#ifdef SPLIT_SPECULAR
-  vec3 own_specular_albedo = vec3(0.0);
-  if (vis.x != 0u && vis.x != 0xFFFFFFFFu && params.demodulate != 0u) {
-    Triangle t;
-    vec2 b;
-    vec3 n, v, diffuse;
-    primary_surface(vis, t, b, n, v);
-    split_demodulation_albedos(vis.y, b, dot(n, v), diffuse, own_specular_albedo);
-  }
-  imageStore(specular_albedo, p, vec4(own_specular_albedo, 1.0));
-#endif
+  const uvec4 own_vis = vis;
   uint seed = pixel_seed(uvec2(p), params.width, params.frame, params.seed);
 #ifdef GRADIENT_SAMPLES
   uvec4 carried = texelFetch(gradient_seeds, p, 0);
@@ -339,7 +329,7 @@ void shade_pixel(ivec2 p) {
   vec3 demodulation = vec3(1.0);
   vec3 specular_radiance = vec3(0.0);
   vec3 diffuse_albedo = vec3(1.0);
-  vec3 specular_albedo = vec3(1.0);
+  vec3 ggx_albedo = vec3(1.0);
   if (vis.x == 0xFFFFFFFFu) {
     radiance = lights.values[vis.y].emission;  // a sphere light seen directly
   } else if (vis.x != 0u) {
@@ -351,7 +341,7 @@ void shade_pixel(ivec2 p) {
     if (params.demodulate != 0u) {
       demodulation = demodulation_albedo(vis.y, b, dot(n, v));
 #ifdef SPLIT_SPECULAR
-      split_demodulation_albedos(vis.y, b, dot(n, v), diffuse_albedo, specular_albedo);
+      split_demodulation_albedos(vis.y, b, dot(n, v), diffuse_albedo, ggx_albedo);
 #endif
     }
     vec3 emission = materials.values[t.material].emission.rgb;
@@ -366,6 +356,20 @@ void shade_pixel(ivec2 p) {
   }
   vec3 one_signal = radiance / max(demodulation, vec3(kAlbedoGuard));
 #ifdef SPLIT_SPECULAR
+  // What composite re-modulates by: the GGX albedo of the pixel's own surface (a carried gradient
+  // sample shaded another point), 0 without a surface (specular light the filters spread there
+  // stays dark), 1 without demodulation (the signal is radiance).
+  vec3 own_specular_albedo = ggx_albedo;
+  if (own_vis.x == 0u || own_vis.x == 0xFFFFFFFFu) {
+    own_specular_albedo = vec3(params.demodulate != 0u ? 0.0 : 1.0);
+  } else if (own_vis != vis && params.demodulate != 0u) {
+    Triangle t;
+    vec2 b;
+    vec3 n, v, diffuse;
+    primary_surface(own_vis, t, b, n, v);
+    split_demodulation_albedos(own_vis.y, b, dot(n, v), diffuse, own_specular_albedo);
+  }
+  imageStore(specular_albedo, p, vec4(own_specular_albedo, 1.0));
   // Rounding can leave the difference a few ulps below 0 where the GGX lobe reflects everything. A
   // non-finite sample stays non-finite in both signals (max() could turn NaN into 0), so that each
   // chain's temporal pass drops it.
@@ -380,7 +384,7 @@ void shade_pixel(ivec2 p) {
   float one_signal_luminance = any_not_finite(one_signal) ? -1.0 : luminance(clamp_sample(one_signal));
   imageStore(illumination, p,
              vec4(diffuse_radiance / max(diffuse_albedo, vec3(kAlbedoGuard)), one_signal_luminance));
-  imageStore(specular, p, vec4(specular_radiance / max(specular_albedo, vec3(kAlbedoGuard)), first_specular_distance));
+  imageStore(specular, p, vec4(specular_radiance / max(ggx_albedo, vec3(kAlbedoGuard)), first_specular_distance));
 #else
   imageStore(illumination, p, vec4(one_signal, 0.0));
 #endif
