@@ -12,9 +12,12 @@
 namespace asvgf::passes {
 
 struct AtrousResources {
-  graph::ResourceId color_in = 0;                  // read: RGBA16F (rgb, variance)
+  // color_in and color_out: RGBA16F (rgb, variance) or RGBA32Uint, the packed filter texel that
+  // carries the surface too (shaders/common/filter_texel.glsl), which the iterations between the
+  // first and the last pass on.
+  graph::ResourceId color_in = 0;                  // read
   graph::ResourceId depth_normal = 0;              // read: RGBA32F
-  graph::ResourceId color_out = 0;                 // written: RGBA16F (rgb, variance)
+  graph::ResourceId color_out = 0;                 // written
   std::optional<graph::ResourceId> color_history;  // also written (persistent RGBA16F) at the history tap
   std::string prefix;                              // of the pass name: "specular." for the second signal
 };

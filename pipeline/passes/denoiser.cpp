@@ -45,7 +45,10 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   c.variance = current;
   add_variance(graph, pipelines, {c.integrated, c.moments, in.depth_normal, current, prefix}, s);
   for (int i = 0; i < s.atrous_iterations; ++i) {
-    const ResourceId next = graph.add_image(prefix + "atrous." + std::to_string(i + 1), w, h, F::RGBA16F);
+    // Packed filter texels between iterations: one fetch a tap (passes/atrous.hpp).
+    const bool last = i + 1 == s.atrous_iterations;
+    const ResourceId next =
+        graph.add_image(prefix + "atrous." + std::to_string(i + 1), w, h, last ? F::RGBA16F : F::RGBA32Uint);
     add_atrous(
         graph, pipelines,
         {current, in.depth_normal, next, i == s.history_tap ? std::optional(c.color_history) : std::nullopt, prefix}, i,

@@ -40,6 +40,26 @@ float weight_luminance(float lp, float lq, float sigma_l, float std_dev) {
   return exp(-abs(lp - lq) / (sigma_l * std_dev + kLumEps));
 }
 
+// The same three weights as one exp2 for the a-trous taps, whose arithmetic bounds the pass: the
+// divisions are hoisted out of the tap loop (AtrousScales, per pixel) and pow(c, s) is exp2(s log2 c).
+const float kLog2e = 1.4426950408889634;
+struct AtrousScales {
+  vec4 depth;  // log2(e) / w_z's tolerance at L1 tap distance step * (1, 2, 3, 4)
+  float luminance;  // log2(e) / (sigma_l std_dev + eps)
+};
+AtrousScales atrous_scales(Surface p, int step, float sigma_z, float sigma_l, float std_dev) {
+  const vec4 tolerance = max(sigma_z * p.dz * float(step) * vec4(1.0, 2.0, 3.0, 4.0), vec4(kDepthEpsRel * p.z));
+  return AtrousScales(kLog2e / tolerance, kLog2e / (sigma_l * std_dev + kLumEps));
+}
+// w_z w_n w_l of a tap at L1 distance l1 (in steps, 1..4) with depth zq (0: no hit, weight 0).
+float atrous_tap_weight(Surface p, float lp, float zq, vec3 nq, float lq, int l1, float sigma_n, AtrousScales s) {
+  if (!(zq > 0.0)) return 0.0;
+  const float cos_pq = dot(p.n, nq);
+  if (sigma_n != 0.0 && !(cos_pq > 0.0)) return 0.0;  // pow(0, sigma_n) = 0; pow(c, 0) = 1
+  const float log2_wn = sigma_n == 0.0 ? 0.0 : sigma_n * log2(min(cos_pq, 1.0));
+  return exp2(log2_wn - abs(p.z - zq) * s.depth[l1 - 1] - abs(lp - lq) * s.luminance);
+}
+
 // 1D kernel taps: B3 spline (1/16, 1/4, 3/8, 1/4, 1/16) for |i| <= 2; box of 3 for |i| <= 1.
 float b3spline(int i) { return i == 0 ? 0.375 : (abs(i) == 1 ? 0.25 : 0.0625); }
 // Binomial (1/4, 1/2, 1/4): the 3x3 low-pass used by the variance prefilter and gradient a-trous.

@@ -2,12 +2,17 @@
 // eq. 1-4; the seed's w_z, w_n, w_l). Taps at p + step * (i, j): a 5x5 B3-spline kernel (paper) or a
 // 3x3 box (seed), chosen by `kernel`. Colour is averaged with h * w; the variance in alpha with
 // (h * w)^2 / (sum h * w)^2. The luminance weight uses the 3x3-binomial-prefiltered variance.
-// The HISTORY variant also writes its output to the colour history (the configurable history tap).
+// Variants: PACKED_IN reads the packed filter texel (common/filter_texel.glsl) the previous iteration
+// wrote instead of an RGBA16F colour and depth_normal per tap; PACKED_OUT writes it for the next
+// iteration; the chain's first iteration reads the variance pass's RGBA16F image and its last writes
+// RGBA16F for composite. HISTORY also writes the result to the colour history (the history tap).
+// SHARED_TILE (the first iteration, step 1 only) reads its taps from a shared-memory tile.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
 #include "common/compute.glsl"
 #include "common/denoise.glsl"
+#include "common/filter_texel.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -20,57 +25,122 @@ layout(set = 0, binding = 0) uniform Params {
   float sigma_n;
   float sigma_l;
 } params;
+#ifdef PACKED_IN
+layout(set = 0, binding = 1) uniform utexture2D color_in;  // filter texels
+#else
 layout(set = 0, binding = 1) uniform texture2D color_in;  // rgb colour, a variance
+#endif
 layout(set = 0, binding = 2) uniform texture2D depth_normal;
+#ifdef PACKED_OUT
+layout(set = 0, binding = 3, rgba32ui) writeonly uniform uimage2D color_out;
+#else
 layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D color_out;
+#endif
 #ifdef HISTORY
 layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_history;
 #endif
 
 ivec2 clamp_pixel(ivec2 q) { return clamp(q, ivec2(0), ivec2(params.width, params.height) - 1); }
 
+// What a tap reads: colour and variance, depth (0: no hit) and unit normal.
+struct Tap {
+  vec4 color;
+  float z;
+  vec3 n;
+};
+#if defined(SHARED_TILE)
+// Step 1 only: the workgroup's 8x8 pixels and their taps lie in one 12x12 block, fetched once into
+// shared memory (colour as halves, decoded normal): 4.5 fetches a pixel instead of 58, and one
+// octahedral decode (docs/performance.md, step 7). Entries outside the image hold the nearest
+// pixel's values, which is what the variance prefilter's clamped reads want; taps skip them.
+const int kApron = 2;
+const int kTile = 8 + 2 * kApron;
+shared uvec2 tile_color[kTile * kTile];
+shared vec4 tile_surface[kTile * kTile];  // depth, normal
+ivec2 tile_origin() { return ivec2(gl_WorkGroupID.xy) * 8 - kApron; }
+int tile_index(ivec2 q) {
+  const ivec2 t = q - tile_origin();
+  return t.y * kTile + t.x;
+}
+void load_tile() {
+  for (int k = int(gl_LocalInvocationIndex); k < kTile * kTile; k += 64) {
+    const ivec2 q = clamp_pixel(tile_origin() + ivec2(k % kTile, k / kTile));
+    const vec4 c = texelFetch(color_in, q, 0);
+    const Surface s = surface_from(texelFetch(depth_normal, q, 0));
+    tile_color[k] = uvec2(packHalf2x16(c.rg), packHalf2x16(c.ba));
+    tile_surface[k] = vec4(s.z, s.n);
+  }
+}
+Tap read_tap(ivec2 q) {
+  const int k = tile_index(q);
+  const vec4 t = tile_surface[k];
+  return Tap(vec4(unpackHalf2x16(tile_color[k].x), unpackHalf2x16(tile_color[k].y)), t.x, t.yzw);
+}
+float variance_at(ivec2 q) { return unpackHalf2x16(tile_color[tile_index(q)].y).y; }
+#elif defined(PACKED_IN)
+Tap read_tap(ivec2 q) {
+  const uvec4 t = texelFetch(color_in, q, 0);
+  return Tap(filter_texel_color(t), filter_texel_depth(t), filter_texel_normal(t));
+}
+float variance_at(ivec2 q) { return filter_texel_variance(texelFetch(color_in, q, 0)); }
+#else
+Tap read_tap(ivec2 q) {
+  const Surface s = surface_from(texelFetch(depth_normal, q, 0));
+  return Tap(texelFetch(color_in, q, 0), s.z, s.n);
+}
+float variance_at(ivec2 q) { return texelFetch(color_in, q, 0).a; }
+#endif
+
 float prefiltered_variance(ivec2 p) {
   float v = 0.0;
   for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx)
-      v += binomial3(dx) * binomial3(dy) * texelFetch(color_in, clamp_pixel(p + ivec2(dx, dy)), 0).a;
+    for (int dx = -1; dx <= 1; ++dx) v += binomial3(dx) * binomial3(dy) * variance_at(clamp_pixel(p + ivec2(dx, dy)));
   return v;
 }
 
 void main() {
+#ifdef SHARED_TILE
+  load_tile();
+  barrier();
+#endif
   ivec2 p = invocation_pixel();
   if (!inside(p, params.width, params.height)) return;
-  vec4 c = texelFetch(color_in, p, 0);
-  Surface center = surface_from(texelFetch(depth_normal, p, 0));
-  vec4 result = c;
+  // The centre's depth gradient is only in depth_normal; its colour, depth and normal come from
+  // where the taps' do, so that a tap on the centre's own surface weighs exactly as much.
+  const Tap c = read_tap(p);
+  Surface center = Surface(c.z, texelFetch(depth_normal, p, 0).y, c.n);
+  vec4 result = c.color;
   if (hit(center)) {
-    float lp = luminance(c.rgb);
+    float lp = luminance(c.color.rgb);
     float std_dev = sqrt(max(prefiltered_variance(p), 0.0));
+    const AtrousScales scales = atrous_scales(center, params.step, params.sigma_z, params.sigma_l, std_dev);
     int radius = params.kernel == 0u ? 2 : 1;
     vec3 sum_c = vec3(0.0);
     float sum_v = 0.0, sum_w = 0.0;
-    for (int dy = -radius; dy <= radius; ++dy) {
-      for (int dx = -radius; dx <= radius; ++dx) {
+    // Constant bounds (the radius test inside), so that the compiler can unroll and index `scales`.
+    for (int dy = -2; dy <= 2; ++dy) {
+      for (int dx = -2; dx <= 2; ++dx) {
+        if (max(abs(dx), abs(dy)) > radius) continue;
         ivec2 q = p + params.step * ivec2(dx, dy);
         if (q.x < 0 || q.y < 0 || !inside(q, params.width, params.height)) continue;
         float h = params.kernel == 0u ? b3spline(dx) * b3spline(dy) : 1.0;
-        vec4 cq = texelFetch(color_in, q, 0);
+        const Tap t = (dx == 0 && dy == 0) ? c : read_tap(q);
         float w = h;
-        if (dx != 0 || dy != 0) {
-          Surface other = surface_from(texelFetch(depth_normal, q, 0));
-          float dist = float(params.step * (abs(dx) + abs(dy)));
-          w *= weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n) *
-               weight_luminance(lp, luminance(cq.rgb), params.sigma_l, std_dev);
-        }
-        sum_c += w * cq.rgb;
-        sum_v += w * w * cq.a;
+        if (dx != 0 || dy != 0)
+          w *= atrous_tap_weight(center, lp, t.z, t.n, luminance(t.color.rgb), abs(dx) + abs(dy), params.sigma_n, scales);
+        sum_c += w * t.color.rgb;
+        sum_v += w * w * t.color.a;
         sum_w += w;
       }
     }
     result = vec4(sum_c / sum_w, sum_v / (sum_w * sum_w));
   }
   result = clamp_fp16(result);
+#ifdef PACKED_OUT
+  imageStore(color_out, p, pack_filter_texel(result, center.z, center.n));
+#else
   imageStore(color_out, p, result);
+#endif
 #ifdef HISTORY
   imageStore(color_history, p, result);
 #endif

@@ -4,7 +4,12 @@ asvgf_add_shader(gradient_atrous SOURCE denoise/gradient_atrous.comp)
 asvgf_add_shader(temporal SOURCE denoise/temporal.comp
                  VARIANTS constant adaptive=ADAPTIVE constant_virtual=VIRTUAL_MOTION adaptive_virtual=ADAPTIVE,VIRTUAL_MOTION)
 asvgf_add_shader(variance SOURCE denoise/variance.comp)
-asvgf_add_shader(atrous SOURCE denoise/atrous.comp VARIANTS plain history=HISTORY)
+asvgf_add_shader(atrous SOURCE denoise/atrous.comp
+                 VARIANTS plain history=HISTORY
+                          first=PACKED_OUT first_history=PACKED_OUT,HISTORY
+                          first_tile=PACKED_OUT,SHARED_TILE first_tile_history=PACKED_OUT,HISTORY,SHARED_TILE
+                          middle=PACKED_IN,PACKED_OUT middle_history=PACKED_IN,PACKED_OUT,HISTORY
+                          last=PACKED_IN last_history=PACKED_IN,HISTORY)
 asvgf_add_shader(composite SOURCE denoise/composite.comp VARIANTS one split=SPLIT)
 asvgf_add_shader(pack_surface SOURCE denoise/pack_surface.comp)
 asvgf_add_shader(gradient_reprojected SOURCE denoise/gradient_reprojected.comp)

@@ -5,11 +5,12 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <algorithm>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -108,6 +109,14 @@ inline ImageD decode(std::span<const std::byte> bytes, int w, int h, hal::Format
             out.at(x, y, c) = static_cast<double>(static_cast<std::uint8_t>(bytes[at])) / 255.0, at += 1;
             break;
           }
+          case hal::Format::R32Uint:
+          case hal::Format::RG32Uint:
+          case hal::Format::RGBA32Uint: {
+            std::uint32_t u;
+            std::memcpy(&u, bytes.data() + at, 4), at += 4;
+            out.at(x, y, c) = u;
+            break;
+          }
           default: {
             float f;
             std::memcpy(&f, bytes.data() + at, 4), at += 4;
@@ -125,6 +134,33 @@ inline ImageD quantize(const ImageD& img, hal::Format format) {
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x)
       for (int c = 0; c < img.channels; ++c) out.at(x, y, c) = c < q.channels ? q.at(x, y, c) : 0.0;
+  return out;
+}
+
+// ---- Packed filter texels (shaders/common/filter_texel.glsl) -----------------------------------
+// A read-back RGBA32Uint filter texel image as the reference's inputs: colour and variance (the
+// halves, exactly), and depth_normal with the packed depth and normal (octahedral again, in double)
+// and the depth gradient taken from `depth_normal`, which the texel does not carry.
+struct FilterTexels {
+  ImageD color, depth_normal;
+};
+inline FilterTexels unpack_filter_texels(const ImageD& packed, const ImageD& depth_normal) {
+  FilterTexels out{ImageD(packed.width, packed.height, 4), ImageD(packed.width, packed.height, 4)};
+  for (int y = 0; y < packed.height; ++y)
+    for (int x = 0; x < packed.width; ++x) {
+      const auto word = [&](int c) { return static_cast<std::uint32_t>(packed.at(x, y, c)); };
+      const auto halves = [](std::uint32_t u) {
+        return std::array<double, 2>{half_to_float(static_cast<std::uint16_t>(u & 0xffffu)),
+                                     half_to_float(static_cast<std::uint16_t>(u >> 16))};
+      };
+      const auto rg = halves(word(0)), ba = halves(word(1)), nxy = halves(word(3));
+      const float signed_z = std::bit_cast<float>(word(2));
+      const double nz = std::sqrt(std::max(1.0 - nxy[0] * nxy[0] - nxy[1] * nxy[1], 0.0));
+      const auto oct = asvgf::reference::oct_encode<double>({nxy[0], nxy[1], signed_z < 0.0f ? -nz : nz});
+      const double values[2][4] = {{rg[0], rg[1], ba[0], ba[1]},
+                                   {std::abs(signed_z), depth_normal.at(x, y, 1), oct[0], oct[1]}};
+      for (int c = 0; c < 4; ++c) out.color.at(x, y, c) = values[0][c], out.depth_normal.at(x, y, c) = values[1][c];
+    }
   return out;
 }
 

@@ -395,6 +395,84 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
   }
 }
 
+// Between the first and the last iteration the chain passes packed filter texels (RGBA32Uint:
+// colour and variance as halves, depth, normal x, y as halves). Each iteration is checked against
+// the reference run on what the previous one wrote (read back and unpacked exactly; the first
+// reads its taps from a shared-memory tile), so the
+// tolerance stays one fp16 store; the packing itself is checked on its own: depth to the bit,
+// normal components to one fp16 ulp (2^-11 at magnitudes up to 1), the normal's z sign kept.
+TEST_CASE(
+    "denoise passes: atrous iterations on packed filter texels match the CPU reference, and the packing keeps depth "
+    "and normal") {
+  ValidatedDevice device;
+  passes::PipelineCache pipelines(*device);
+  passes::DenoiseSettings settings;
+  for (const auto& size : kSizes) {
+    const int w = size[0], h = size[1];
+    CAPTURE(w);
+    Random r(97u + static_cast<std::uint32_t>(w));
+    ImageD dn = random_depth_normal(r, w, h);
+    // Some normals facing -z, so that the depth's sign carries the normal's z sign.
+    for (int y = 0; y < h; y += 3)
+      for (int x = 0; x < w; x += 2) {
+        const auto oct = asvgf::reference::oct_encode<double>({0.3, -0.2, -0.93});
+        dn.at(x, y, 2) = oct[0], dn.at(x, y, 3) = oct[1];
+      }
+    const ImageD color = random_color(r, w, h, 0, 4, 0.5);
+    const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
+    GraphHarness harness(*device);
+    RenderGraph g;
+    const auto dn_in = harness.input(g, "depth_normal", dn, F::RGBA32F);
+    const auto first = g.add_image("atrous.1", uw, uh, F::RGBA32Uint);
+    const auto middle = g.add_image("atrous.2", uw, uh, F::RGBA32Uint);
+    const auto last = g.add_image("atrous.3", uw, uh, F::RGBA16F);
+    // A history tap on the first and on a middle iteration (both variants; a chain has one).
+    const auto history_first = g.add_image("color_history.1", uw, uh, F::RGBA16F, Lifetime::Persistent);
+    const auto history = g.add_image("color_history.2", uw, uh, F::RGBA16F, Lifetime::Persistent);
+    passes::add_atrous(g, pipelines, {harness.input(g, "color_in", color, F::RGBA16F), dn_in, first, history_first}, 0,
+                       settings);
+    passes::add_atrous(g, pipelines, {first, dn_in, middle, history}, 1, settings);
+    passes::add_atrous(g, pipelines, {middle, dn_in, last}, 2, settings);
+    ImageD got_first, got_middle, got_last, got_history_first, got_history;
+    harness.readback(g, first, &got_first);
+    harness.readback(g, middle, &got_middle);
+    harness.readback(g, last, &got_last);
+    harness.readback(g, history_first, &got_history_first);
+    harness.readback(g, history, &got_history);
+    harness.run(g);
+    const ImageD dn_q = quantize(dn, F::RGBA32F);
+    const FilterTexels t1 = unpack_filter_texels(got_first, dn_q), t2 = unpack_filter_texels(got_middle, dn_q);
+    const auto params = [&](int iteration) {
+      return ref::AtrousParams{1 << iteration, 0, settings.sigma_z, settings.sigma_n, settings.sigma_l};
+    };
+    DENOISE_CHECK_CLOSE(
+        compare(t1.color, ref::atrous(quantize(color, F::RGBA16F), dn_q, params(0)), 4, fp16_tolerance(4)),
+        "first iteration");
+    DENOISE_CHECK_CLOSE(compare(t2.color, ref::atrous(t1.color, t1.depth_normal, params(1)), 4, fp16_tolerance(4)),
+                        "middle iteration");
+    DENOISE_CHECK_CLOSE(compare(got_last, ref::atrous(t2.color, t2.depth_normal, params(2)), 4, fp16_tolerance(4)),
+                        "last iteration");
+    // The same fp32 result, stored by the image format and by packHalf2x16 (rounding may differ).
+    DENOISE_CHECK_CLOSE(compare(got_history_first, t1.color, 4, fp16_tolerance(0)), "first history tap");
+    DENOISE_CHECK_CLOSE(compare(got_history, t2.color, 4, fp16_tolerance(0)), "middle history tap");
+    int packing_errors = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const double z = dn_q.at(x, y, 0);
+        const auto n = asvgf::reference::oct_decode<double>({dn_q.at(x, y, 2), dn_q.at(x, y, 3)});
+        const auto packed =
+            asvgf::reference::oct_decode<double>({t1.depth_normal.at(x, y, 2), t1.depth_normal.at(x, y, 3)});
+        const bool depth_kept = t1.depth_normal.at(x, y, 0) == z && t2.depth_normal.at(x, y, 0) == z;
+        bool normal_kept = z == 0.0 || (std::abs(packed[0] - n[0]) <= 1.0 / 2048 &&
+                                        std::abs(packed[1] - n[1]) <= 1.0 / 2048 && (packed[2] < 0.0) == (n[2] < 0.0));
+        normal_kept = normal_kept && t2.depth_normal.at(x, y, 2) == t1.depth_normal.at(x, y, 2) &&
+                      t2.depth_normal.at(x, y, 3) == t1.depth_normal.at(x, y, 3);
+        if (!depth_kept || !normal_kept) ++packing_errors;
+      }
+    CHECK(packing_errors == 0);
+  }
+}
+
 TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and ACES tone curves), zeroes and counts non-finite radiance") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);

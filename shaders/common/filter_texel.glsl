@@ -1,0 +1,30 @@
+// common/filter_texel.glsl: the a-trous iterations' packed texel (RGBA32Uint): everything a tap
+// needs in one 128-bit fetch, with a normal that needs no octahedral decode. On the H200 the taps'
+// two fetches (colour, depth_normal) and the per-tap octahedral decode each bounded an iteration
+// at about 0.1 ms at 1080p; one fetch and no decode took it to 0.084 (docs/performance.md, step 7).
+//   x: colour r, g as halves      y: colour b, variance as halves
+//   z: depth (float bits; 0 = no hit), negated where the normal's z is negative
+//   w: normal x, y as halves; z = +-sqrt(1 - x^2 - y^2) with the depth's sign
+// The colour and variance lose nothing against the RGBA16F images they replace. The normal's x and
+// y round to half (2^-12 absolute); a normal decoded twice is the same, so equal normals still weigh
+// 1. CPU twin: reference::filter_texel_normal (pipeline/reference/denoise_reference.hpp).
+#ifndef ASVGF_COMMON_FILTER_TEXEL_GLSL
+#define ASVGF_COMMON_FILTER_TEXEL_GLSL
+
+uvec4 pack_filter_texel(vec4 color_variance, float z, vec3 n) {
+  const float signed_z = n.z < 0.0 ? -z : z;
+  return uvec4(packHalf2x16(color_variance.rg), packHalf2x16(color_variance.ba), floatBitsToUint(signed_z),
+               packHalf2x16(n.xy));
+}
+
+vec4 filter_texel_color(uvec4 t) { return vec4(unpackHalf2x16(t.x), unpackHalf2x16(t.y)); }
+float filter_texel_variance(uvec4 t) { return unpackHalf2x16(t.y).y; }
+float filter_texel_depth(uvec4 t) { return abs(uintBitsToFloat(t.z)); }
+
+vec3 filter_texel_normal(uvec4 t) {
+  const vec2 xy = unpackHalf2x16(t.w);
+  const float z = sqrt(max(1.0 - dot(xy, xy), 0.0));
+  return vec3(xy, uintBitsToFloat(t.z) < 0.0 ? -z : z);
+}
+
+#endif
