@@ -1,7 +1,8 @@
 // common/filter_texel.glsl: the a-trous iterations' packed texel (RGBA32Uint): everything a tap
 // needs in one 128-bit fetch, with a normal that needs no octahedral decode. On the H200 the taps'
-// two fetches (colour, depth_normal) and the per-tap octahedral decode each bounded an iteration
-// at about 0.1 ms at 1080p; one fetch and no decode took it to 0.084 (docs/performance.md, step 7).
+// two fetches (colour, depth_normal) and their arithmetic (the octahedral decode the largest part)
+// each bounded an iteration at about 0.1 ms at 1080p; with this texel it takes 0.096
+// (docs/performance.md, steps 9 and 10).
 //   x: colour r, g as halves      y: colour b, variance as halves
 //   z: depth (float bits; 0 = no hit), negated where the normal's z is negative
 //   w: normal x, y as halves; z = +-sqrt(1 - x^2 - y^2) with the depth's sign

@@ -50,8 +50,8 @@ struct Tap {
 };
 #if defined(SHARED_TILE)
 // Step 1 only: the workgroup's 8x8 pixels and their taps lie in one 12x12 block, fetched once into
-// shared memory (colour as halves, decoded normal): 4.5 fetches a pixel instead of 58, and one
-// octahedral decode (docs/performance.md, step 7). Entries outside the image hold the nearest
+// shared memory (colour as halves, decoded normal): 5.5 fetches a pixel instead of 58, and 2.25
+// octahedral decodes instead of 24 (docs/performance.md, step 11). Entries outside the image hold the nearest
 // pixel's values, which is what the variance prefilter's clamped reads want; taps skip them.
 const int kApron = 2;
 const int kTile = 8 + 2 * kApron;
