@@ -44,13 +44,18 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   ResourceId current = graph.add_image(prefix + "color_variance", w, h, F::RGBA16F);
   c.variance = current;
   add_variance(graph, pipelines, {c.integrated, c.moments, in.depth_normal, current, prefix}, s);
+  const std::uint64_t range = pipelines.device().capabilities().max_storage_buffer_range;
+  const std::uint64_t max_storage_binding = range ? range : std::uint64_t{1} << 27;  // 0: not known
   for (int i = 0; i < s.atrous_iterations; ++i) {
-    // Packed filter texels between the 5x5 kernel's iterations: one fetch a tap (passes/atrous.hpp).
+    // Packed filter texels between the 5x5 kernel's iterations: one load a tap (passes/atrous.hpp).
     // The 3x3 box's 8 taps gain less than the wider texel costs (H200 1080p: 0.068 against 0.061 ms).
-    const bool last = i + 1 == s.atrous_iterations;
-    const bool packed = !last && s.kernel == AtrousKernel::B3Spline;
-    const ResourceId next =
-        graph.add_image(prefix + "atrous." + std::to_string(i + 1), w, h, packed ? F::RGBA32Uint : F::RGBA16F);
+    // Images too where the buffer would exceed the device's largest storage binding (Vulkan, OpenGL
+    // ES and WebGPU guarantee 2^27 bytes: 4K fits, 8K does not).
+    const std::string name = prefix + "atrous." + std::to_string(i + 1);
+    const std::uint64_t packed_bytes = std::uint64_t{w} * h * 16;
+    const bool packed =
+        i + 1 < s.atrous_iterations && s.kernel == AtrousKernel::B3Spline && packed_bytes <= max_storage_binding;
+    const ResourceId next = packed ? graph.add_buffer(name, packed_bytes) : graph.add_image(name, w, h, F::RGBA16F);
     add_atrous(
         graph, pipelines,
         {current, in.depth_normal, next, i == s.history_tap ? std::optional(c.color_history) : std::nullopt, prefix}, i,

@@ -1,14 +1,14 @@
-// common/filter_texel.glsl: the a-trous iterations' packed texel (RGBA32Uint): everything a tap
-// needs in one 128-bit fetch, with a normal that needs no octahedral decode. On the H200 the taps'
-// two fetches (colour, depth_normal) and their arithmetic (the octahedral decode the largest part)
-// each bounded an iteration at about 0.1 ms at 1080p; with this texel it takes 0.096
-// (docs/performance.md, steps 9 and 10).
+// common/filter_texel.glsl: the a-trous iterations' packed texel (a uvec4 a pixel, in a storage
+// buffer): everything a tap needs in one 128-bit load, with a normal that needs no octahedral
+// decode. On the H200 the taps' two fetches (colour, depth_normal) and their arithmetic (the
+// octahedral decode the largest part) each bounded an iteration at about 0.1 ms at 1080p
+// (docs/performance.md, steps 9, 10 and 13).
 //   x: colour r, g as halves      y: colour b, variance as halves
 //   z: depth (float bits; 0 = no hit), negated where the normal's z is negative
 //   w: normal x, y as halves; z = +-sqrt(1 - x^2 - y^2) with the depth's sign
 // The colour and variance lose nothing against the RGBA16F images they replace. The normal's x and
 // y round to half (2^-12 absolute); a normal decoded twice is the same, so equal normals still weigh
-// 1. CPU twin: reference::filter_texel_normal (pipeline/reference/denoise_reference.hpp).
+// 1. Read on the CPU by the tests' unpack_filter_texels (tests/pipeline/denoise_harness.hpp).
 #ifndef ASVGF_COMMON_FILTER_TEXEL_GLSL
 #define ASVGF_COMMON_FILTER_TEXEL_GLSL
 

@@ -2,11 +2,12 @@
 // eq. 1-4; the seed's w_z, w_n, w_l). Taps at p + step * (i, j): a 5x5 B3-spline kernel (paper) or a
 // 3x3 box (seed), chosen by `kernel`. Colour is averaged with h * w; the variance in alpha with
 // (h * w)^2 / (sum h * w)^2. The luminance weight uses the 3x3-binomial-prefiltered variance.
-// Variants: PACKED_IN reads the packed filter texel (common/filter_texel.glsl) the previous iteration
-// wrote instead of an RGBA16F colour and depth_normal per tap; PACKED_OUT writes it for the next
-// iteration; the chain's first iteration reads the variance pass's RGBA16F image and its last writes
-// RGBA16F for composite. HISTORY also writes the result to the colour history (the history tap).
-// SHARED_TILE (the first iteration, step 1 only) reads its taps from a shared-memory tile.
+// Variants: PACKED_IN reads the packed filter texels (common/filter_texel.glsl) the previous
+// iteration wrote to a storage buffer, one per pixel in rows, instead of an RGBA16F colour and
+// depth_normal per tap; PACKED_OUT writes them for the next iteration. A chain's first iteration
+// reads the variance pass's RGBA16F image and its last writes RGBA16F for composite. PACKED_OUT
+// from an RGBA16F input is the first iteration (step 1), which reads its taps from a shared-memory
+// tile. HISTORY also writes the result to the colour history (the history tap).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -26,13 +27,13 @@ layout(set = 0, binding = 0) uniform Params {
   float sigma_l;
 } params;
 #ifdef PACKED_IN
-layout(set = 0, binding = 1) uniform utexture2D color_in;  // filter texels
+layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec4 texels[]; } color_in;
 #else
 layout(set = 0, binding = 1) uniform texture2D color_in;  // rgb colour, a variance
 #endif
 layout(set = 0, binding = 2) uniform texture2D depth_normal;
 #ifdef PACKED_OUT
-layout(set = 0, binding = 3, rgba32ui) writeonly uniform uimage2D color_out;
+layout(set = 0, binding = 3, std430) writeonly buffer ColorOut { uvec4 texels[]; } color_out;
 #else
 layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D color_out;
 #endif
@@ -48,7 +49,7 @@ struct Tap {
   float z;
   vec3 n;
 };
-#if defined(SHARED_TILE)
+#if defined(PACKED_OUT) && !defined(PACKED_IN)
 // Step 1 only: the workgroup's 8x8 pixels and their taps lie in one 12x12 block, fetched once into
 // shared memory (colour as halves, decoded normal): 5.5 fetches a pixel instead of 58, and 2.25
 // octahedral decodes instead of 24 (docs/performance.md, step 11). Entries outside the image hold the nearest
@@ -78,11 +79,14 @@ Tap read_tap(ivec2 q) {
 }
 float variance_at(ivec2 q) { return unpackHalf2x16(tile_color[tile_index(q)].y).y; }
 #elif defined(PACKED_IN)
+// Storage-buffer loads, not texel fetches: the fetches' issue rate bounded the iteration (0.081
+// against 0.097 ms at 1080p on the H200, docs/performance.md step 13).
+uvec4 texel_at(ivec2 q) { return color_in.texels[q.y * int(params.width) + q.x]; }
 Tap read_tap(ivec2 q) {
-  const uvec4 t = texelFetch(color_in, q, 0);
+  const uvec4 t = texel_at(q);
   return Tap(filter_texel_color(t), filter_texel_depth(t), filter_texel_normal(t));
 }
-float variance_at(ivec2 q) { return filter_texel_variance(texelFetch(color_in, q, 0)); }
+float variance_at(ivec2 q) { return filter_texel_variance(texel_at(q)); }
 #else
 Tap read_tap(ivec2 q) {
   const Surface s = surface_from(texelFetch(depth_normal, q, 0));
@@ -99,7 +103,7 @@ float prefiltered_variance(ivec2 p) {
 }
 
 void main() {
-#ifdef SHARED_TILE
+#if defined(PACKED_OUT) && !defined(PACKED_IN)
   load_tile();
   barrier();
 #endif
@@ -137,7 +141,7 @@ void main() {
   }
   result = clamp_fp16(result);
 #ifdef PACKED_OUT
-  imageStore(color_out, p, pack_filter_texel(result, center.z, center.n));
+  color_out.texels[p.y * int(params.width) + p.x] = pack_filter_texel(result, center.z, center.n);
 #else
   imageStore(color_out, p, result);
 #endif

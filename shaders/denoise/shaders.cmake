@@ -7,7 +7,6 @@ asvgf_add_shader(variance SOURCE denoise/variance.comp)
 asvgf_add_shader(atrous SOURCE denoise/atrous.comp
                  VARIANTS plain history=HISTORY
                           first=PACKED_OUT first_history=PACKED_OUT,HISTORY
-                          first_tile=PACKED_OUT,SHARED_TILE first_tile_history=PACKED_OUT,HISTORY,SHARED_TILE
                           middle=PACKED_IN,PACKED_OUT middle_history=PACKED_IN,PACKED_OUT,HISTORY
                           last=PACKED_IN last_history=PACKED_IN,HISTORY)
 asvgf_add_shader(composite SOURCE denoise/composite.comp VARIANTS one split=SPLIT)

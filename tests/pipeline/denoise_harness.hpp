@@ -282,6 +282,25 @@ class GraphHarness {
     g.output(dst);
     readbacks_.push_back({image, out, decl.width, decl.height, decl.format});
   }
+  // After run(), `*out` holds the buffer's 32-bit words as an image of `width` x `height` pixels of
+  // `channels` words each (e.g. the a-trous chain's packed filter texels: 4 words a pixel).
+  void readback_buffer(asvgf::graph::RenderGraph& g, asvgf::graph::ResourceId resource, int width, int height,
+                       int channels, ImageD* out) {
+    const auto decl = g.resource(resource);
+    const auto buffer = device_.create_buffer(
+        {"test readback " + decl.name, decl.size, hal::BufferUsage::CopySrc | hal::BufferUsage::CopyDst});
+    temporary_buffers_.push_back(buffer);
+    const auto dst = g.import("readback " + decl.name, buffer, hal::State::Undefined);
+    g.add_pass("readback." + decl.name)
+        .read(resource, asvgf::graph::Use::CopySrc)
+        .write(dst, asvgf::graph::Use::CopyDst)
+        .execute([resource, dst, size = decl.size](asvgf::graph::PassContext& ctx) {
+          ctx.commands().copy_buffer(
+              {hal::BufferHandle{ctx.resource(resource).id}, hal::BufferHandle{ctx.resource(dst).id}, 0, 0, size});
+        });
+    g.output(dst);
+    buffer_readbacks_.push_back({buffer, out, width, height, channels, decl.size});
+  }
   // Compiles, executes, submits and waits; then reads back and releases the frame's test images.
   void run(asvgf::graph::RenderGraph& g) {
     keep_transients_alive(g);
@@ -290,8 +309,9 @@ class GraphHarness {
     device_.submit(*cmd_);
     device_.wait();
     cmd_->reset();
-    if (!readbacks_.empty()) {
+    if (!readbacks_.empty() || !buffer_readbacks_.empty()) {
       for (const auto& r : readbacks_) cmd_->barrier({r.image, hal::State::CopyDst, hal::State::CopySrc});
+      for (const auto& r : buffer_readbacks_) cmd_->barrier({r.buffer, hal::State::CopyDst, hal::State::CopySrc});
       device_.submit(*cmd_);
       device_.wait();
       cmd_->reset();
@@ -299,6 +319,12 @@ class GraphHarness {
         std::vector<std::byte> bytes(std::size_t{r.width} * r.height * hal::format_size(r.format));
         device_.read_image(r.image, bytes);
         *r.out = decode(bytes, static_cast<int>(r.width), static_cast<int>(r.height), r.format);
+      }
+      for (const auto& r : buffer_readbacks_) {
+        std::vector<std::uint32_t> words(r.size / 4);
+        device_.read_buffer(r.buffer, 0, std::as_writable_bytes(std::span(words)));
+        *r.out = ImageD(r.width, r.height, r.channels);
+        for (std::size_t i = 0; i < r.out->data.size() && i < words.size(); ++i) r.out->data[i] = words[i];
       }
     }
     release();
@@ -320,16 +346,18 @@ class GraphHarness {
     const auto resources = g.resources();
     auto pass = g.add_pass("test.keep_alive");
     for (asvgf::graph::ResourceId id = 0; id < resources.size(); ++id)
-      if (resources[id].lifetime == asvgf::graph::Lifetime::Transient && resources[id].kind == hal::ResourceKind::Image)
-        pass.read(id);
+      if (resources[id].lifetime == asvgf::graph::Lifetime::Transient) pass.read(id);
     const auto sink = g.import("test keep-alive sink", sink_, hal::State::ShaderWrite);
     pass.write(sink);
     g.output(sink);
   }
   void release() {
     for (auto image : temporaries_) device_.destroy(image);
+    for (auto buffer : temporary_buffers_) device_.destroy(buffer);
     temporaries_.clear();
+    temporary_buffers_.clear();
     readbacks_.clear();
+    buffer_readbacks_.clear();
   }
   struct Readback {
     hal::ImageHandle image;
@@ -337,11 +365,19 @@ class GraphHarness {
     std::uint32_t width, height;
     hal::Format format;
   };
+  struct BufferReadback {
+    hal::BufferHandle buffer;
+    ImageD* out;
+    int width, height, channels;
+    std::uint64_t size;
+  };
   hal::Device& device_;
   asvgf::graph::GraphRuntime runtime_;
   std::unique_ptr<hal::CommandList> cmd_;
   std::vector<hal::ImageHandle> temporaries_;
+  std::vector<hal::BufferHandle> temporary_buffers_;
   std::vector<Readback> readbacks_;
+  std::vector<BufferReadback> buffer_readbacks_;
   hal::BufferHandle sink_;
 };
 

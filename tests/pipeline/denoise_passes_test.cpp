@@ -395,8 +395,8 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
   }
 }
 
-// Between the first and the last iteration the chain passes packed filter texels (RGBA32Uint:
-// colour and variance as halves, depth, normal x, y as halves). Each iteration is checked against
+// Between the first and the last iteration the chain passes packed filter texels (a storage buffer
+// of 4 words a pixel: colour and variance as halves, depth, normal x, y as halves). Each iteration is checked against
 // the reference run on what the previous one wrote (read back and unpacked exactly; the first
 // reads its taps from a shared-memory tile), so the
 // tolerance stays one fp16 store; the packing itself is checked on its own: depth to the bit,
@@ -423,8 +423,9 @@ TEST_CASE(
     GraphHarness harness(*device);
     RenderGraph g;
     const auto dn_in = harness.input(g, "depth_normal", dn, F::RGBA32F);
-    const auto first = g.add_image("atrous.1", uw, uh, F::RGBA32Uint);
-    const auto middle = g.add_image("atrous.2", uw, uh, F::RGBA32Uint);
+    const std::uint64_t packed_bytes = std::uint64_t{uw} * uh * 16;
+    const auto first = g.add_buffer("atrous.1", packed_bytes);
+    const auto middle = g.add_buffer("atrous.2", packed_bytes);
     const auto last = g.add_image("atrous.3", uw, uh, F::RGBA16F);
     // A history tap on the first and on a middle iteration (both variants; a chain has one).
     const auto history_first = g.add_image("color_history.1", uw, uh, F::RGBA16F, Lifetime::Persistent);
@@ -434,8 +435,8 @@ TEST_CASE(
     passes::add_atrous(g, pipelines, {first, dn_in, middle, history}, 1, settings);
     passes::add_atrous(g, pipelines, {middle, dn_in, last}, 2, settings);
     ImageD got_first, got_middle, got_last, got_history_first, got_history;
-    harness.readback(g, first, &got_first);
-    harness.readback(g, middle, &got_middle);
+    harness.readback_buffer(g, first, w, h, 4, &got_first);
+    harness.readback_buffer(g, middle, w, h, 4, &got_middle);
     harness.readback(g, last, &got_last);
     harness.readback(g, history_first, &got_history_first);
     harness.readback(g, history, &got_history);
@@ -471,6 +472,11 @@ TEST_CASE(
       }
     CHECK(packing_errors == 0);
   }
+  // The shared-memory tile that writes the first packed texels assumes step 1.
+  RenderGraph g;
+  const auto img = g.add_image("color_in", 8, 8, F::RGBA16F), dn = g.add_image("depth_normal", 8, 8, F::RGBA32F);
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("out", 8 * 8 * 16)}, 1, settings),
+                  std::invalid_argument);
 }
 
 TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and ACES tone curves), zeroes and counts non-finite radiance") {

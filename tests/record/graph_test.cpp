@@ -28,6 +28,7 @@ std::string messages(const hal::record::RecordDevice& d) {
 
 // The built-in room on the recording HAL, with output images, run frame after frame.
 struct Scene : CheckedRecord {
+  explicit Scene(hal::record::RecordOptions options = {}) : CheckedRecord(options) {}
   scene::Scene room = scene::builtin_scene("cornell", "light-exit");
   render::SceneGpu gpu{device, room, true};
   hal::ImageHandle hdr, display;
@@ -204,6 +205,42 @@ TEST_CASE("without the graph's binding check, the recording HAL catches every de
   }
   MESSAGE(hal_reports << " deletions reported by the recording HAL, " << silent_reads << " reads not caught by it");
   CHECK(hal_reports > 10);
+}
+
+TEST_CASE(
+    "the a-trous chain passes packed filter texels in storage buffers where the device's storage binding holds them, "
+    "RGBA16F images otherwise and for the box kernel") {
+  // "name:buffer" / "name:image" for each a-trous resource of one frame, which must also run clean.
+  const auto kinds = [](std::uint64_t max_storage_buffer_range, passes::AtrousKernel kernel) {
+    hal::record::RecordOptions options;
+    options.capabilities.max_storage_buffer_range = max_storage_buffer_range;
+    Scene scene(options);
+    graph::GraphRuntime runtime(scene.device);
+    frame::FrameGraphBuilder builder(scene.device);
+    frame::FrameSettings s;
+    s.width = 32;
+    s.height = 16;
+    s.denoise.kernel = kernel;
+    scene.gpu.update(0);
+    auto g = builder.build(s, scene.gpu, scene.targets(32, 16));
+    std::string out;
+    for (const auto& r : g.resources())
+      if (r.name.rfind("atrous.", 0) == 0)
+        out += r.name + (r.kind == hal::ResourceKind::Buffer ? ":buffer " : ":image ");
+    auto cmd = scene.device.create_command_list("frame");
+    runtime.execute(runtime.compile(g), *cmd);
+    scene.device.submit(*cmd);
+    scene.device.wait();
+    CHECK(messages(scene.record).empty());
+    return out;
+  };
+  const std::uint64_t packed_bytes = 32 * 16 * 16;
+  CHECK(kinds(packed_bytes, passes::AtrousKernel::B3Spline) ==
+        "atrous.1:buffer atrous.2:buffer atrous.3:buffer atrous.4:buffer atrous.5:image ");
+  CHECK(kinds(packed_bytes - 1, passes::AtrousKernel::B3Spline) ==
+        "atrous.1:image atrous.2:image atrous.3:image atrous.4:image atrous.5:image ");
+  CHECK(kinds(packed_bytes, passes::AtrousKernel::Box) ==
+        "atrous.1:image atrous.2:image atrous.3:image atrous.4:image atrous.5:image ");
 }
 
 TEST_CASE("culling: an output nobody reads culls its pass, a still frame culls the gradient passes") {
