@@ -396,11 +396,11 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
 }
 
 // Between the first and the last iteration the chain passes packed filter texels (a storage buffer
-// of 4 words a pixel: colour and variance as halves, depth, normal x, y as halves). Each iteration is checked against
-// the reference run on what the previous one wrote (read back and unpacked exactly; the first
-// reads its taps from a shared-memory tile), so the
-// tolerance stays one fp16 store; the packing itself is checked on its own: depth to the bit,
-// normal components to one fp16 ulp (2^-11 at magnitudes up to 1), the normal's z sign kept.
+// of 4 words a pixel: colour and variance as halves, depth, normal x, y as halves). Each iteration
+// is checked against the reference run on what the previous one wrote (read back and unpacked
+// exactly; the first reads its taps from a shared-memory tile), so the tolerance stays one fp16
+// store; the packing itself is checked on its own: depth to the bit, normal components to one
+// fp16 ulp (2^-11 at magnitudes up to 1), the normal's z sign kept.
 TEST_CASE(
     "denoise passes: atrous iterations on packed filter texels match the CPU reference, and the packing keeps depth "
     "and normal") {
