@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <span>
 #include <string>
 
@@ -70,6 +71,8 @@ void check_config(const hal::Device& device, const DenoiserConfig& c) {
   if (!(s.history_cap >= 1.0f)) fail("history_cap", "must be >= 1");
   if (!(s.sigma_z > 0.0f) || !(s.sigma_n >= 0.0f) || !(s.sigma_l > 0.0f))
     fail("sigma_z/sigma_n/sigma_l", "must be positive");
+  if (!std::isfinite(s.sigma_z) || !std::isfinite(s.sigma_n) || !std::isfinite(s.sigma_l))
+    fail("sigma_z/sigma_n/sigma_l", "must be finite");
   if (!(s.exposure >= 0.0f) || !(s.exposure < 1e30f)) fail("exposure", "must be finite and >= 0");
 }
 

@@ -41,6 +41,16 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
   const bool packed_out = graph.resource(r.color_out).kind == hal::ResourceKind::Buffer;
   if (packed_out && !packed_in && iteration != 0)
     throw std::invalid_argument("add_atrous: packed filter texels from an RGBA16F input only at iteration 0 (step 1)");
+  // Every image and buffer must cover depth_normal's size, over which the pass dispatches.
+  for (const graph::ResourceId id : {r.color_in, r.color_out}) {
+    const auto& other = graph.resource(id);
+    const bool covers = other.kind == hal::ResourceKind::Buffer
+                            ? other.size >= std::uint64_t{16} * decl.width * decl.height
+                            : other.width == decl.width && other.height == decl.height;
+    if (!covers)
+      throw std::invalid_argument("add_atrous: '" + other.name + "' does not match depth_normal's " +
+                                  std::to_string(decl.width) + "x" + std::to_string(decl.height));
+  }
   const Uniforms u{decl.width, decl.height, 1 << iteration, static_cast<std::uint32_t>(s.kernel),
                    s.sigma_z,  s.sigma_n,   s.sigma_l};
   std::vector<Binding> bindings{{"color_in", r.color_in}, {"depth_normal", r.depth_normal}, {"color_out", r.color_out}};

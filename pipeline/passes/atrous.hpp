@@ -24,7 +24,8 @@ struct AtrousResources {
 };
 // Adds "<prefix>atrous.<iteration + 1>" with step 2^iteration and the settings' kernel and sigmas.
 // The dispatch covers depth_normal's size. Throws std::invalid_argument for a buffer out from an
-// image in at an iteration other than 0.
+// image in at an iteration other than 0, and for colour images of another size or buffers smaller
+// than 16 bytes a pixel.
 graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
                               int iteration, const DenoiseSettings& settings);
 

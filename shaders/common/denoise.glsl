@@ -42,6 +42,8 @@ float weight_luminance(float lp, float lq, float sigma_l, float std_dev) {
 
 // The same three weights as one exp2 for the a-trous taps, whose arithmetic bounds the pass: the
 // divisions are hoisted out of the tap loop (AtrousScales, per pixel) and pow(c, s) is exp2(s log2 c).
+// The CPU reference keeps the three separate functions above; the results agree to fp32 rounding
+// (the a-trous tests' tolerance). A NaN cosine gives weight 0 here (pack_surface never lets one in).
 const float kLog2e = 1.4426950408889634;
 struct AtrousScales {
   vec4 depth;  // log2(e) / w_z's tolerance at L1 tap distance step * (1, 2, 3, 4)
@@ -56,7 +58,8 @@ float atrous_tap_weight(Surface p, float lp, float zq, vec3 nq, float lq, int l1
   if (!(zq > 0.0)) return 0.0;
   const float cos_pq = dot(p.n, nq);
   if (sigma_n != 0.0 && !(cos_pq > 0.0)) return 0.0;  // pow(0, sigma_n) = 0; pow(c, 0) = 1
-  const float log2_wn = sigma_n == 0.0 ? 0.0 : sigma_n * log2(min(cos_pq, 1.0));
+  // cos >= 1 (equal normals, to rounding) gives 0 even for an infinite sigma_n (pow(1, inf) = 1).
+  const float log2_wn = sigma_n == 0.0 || cos_pq >= 1.0 ? 0.0 : sigma_n * log2(cos_pq);
   return exp2(log2_wn - abs(p.z - zq) * s.depth[l1 - 1] - abs(lp - lq) * s.luminance);
 }
 

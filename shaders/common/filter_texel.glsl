@@ -7,8 +7,13 @@
 //   z: depth (float bits; 0 = no hit), negated where the normal's z is negative
 //   w: normal x, y as halves; z = +-sqrt(1 - x^2 - y^2) with the depth's sign
 // The colour and variance lose nothing against the RGBA16F images they replace. The normal's x and
-// y round to half (2^-12 absolute); a normal decoded twice is the same, so equal normals still weigh
-// 1. Read on the CPU by the tests' unpack_filter_texels (tests/pipeline/denoise_harness.hpp).
+// y round to half (one fp16 ulp, 2^-11, at worst); z rebuilt from them is within min(0.037,
+// 1.4e-3 / |z|): near z = 0 the rebuild is ill-conditioned (up to 2 degrees where a smooth surface's
+// normal crosses z = 0: neighbours there weigh about 0.8 instead of 1 under sigma_n = 128). Two
+// better-conditioned layouts cost more than they gave on the H200: x, y as snorm16 (0.4 degrees;
+// 0.109 ms an iteration against 0.081) and rebuilding the largest component (with snorm16: 0.122;
+// docs/performance.md, step 14). A normal decoded twice is the same, so equal normals weigh 1 (to
+// fp32 rounding). Read on the CPU by the tests' unpack_filter_texels (tests/pipeline/denoise_harness.hpp).
 #ifndef ASVGF_COMMON_FILTER_TEXEL_GLSL
 #define ASVGF_COMMON_FILTER_TEXEL_GLSL
 

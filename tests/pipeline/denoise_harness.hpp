@@ -138,9 +138,9 @@ inline ImageD quantize(const ImageD& img, hal::Format format) {
 }
 
 // ---- Packed filter texels (shaders/common/filter_texel.glsl) -----------------------------------
-// A read-back RGBA32Uint filter texel image as the reference's inputs: colour and variance (the
-// halves, exactly), and depth_normal with the packed depth and normal (octahedral again, in double)
-// and the depth gradient taken from `depth_normal`, which the texel does not carry.
+// A read-back buffer of packed filter texels (4 words a pixel) as the reference's inputs: colour
+// and variance (the halves, exactly), and depth_normal with the packed depth and normal (octahedral
+// again, in double) and the depth gradient taken from `depth_normal`, which the texel does not carry.
 struct FilterTexels {
   ImageD color, depth_normal;
 };
@@ -287,6 +287,7 @@ class GraphHarness {
   void readback_buffer(asvgf::graph::RenderGraph& g, asvgf::graph::ResourceId resource, int width, int height,
                        int channels, ImageD* out) {
     const auto decl = g.resource(resource);
+    REQUIRE(decl.size == std::uint64_t{4} * static_cast<std::uint64_t>(width) * height * channels);
     const auto buffer = device_.create_buffer(
         {"test readback " + decl.name, decl.size, hal::BufferUsage::CopySrc | hal::BufferUsage::CopyDst});
     temporary_buffers_.push_back(buffer);

@@ -399,8 +399,7 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
 // of 4 words a pixel: colour and variance as halves, depth, normal x, y as halves). Each iteration
 // is checked against the reference run on what the previous one wrote (read back and unpacked
 // exactly; the first reads its taps from a shared-memory tile), so the tolerance stays one fp16
-// store; the packing itself is checked on its own: depth to the bit, normal components to one
-// fp16 ulp (2^-11 at magnitudes up to 1), the normal's z sign kept.
+// store; the packing itself is checked on its own, for normals along every axis and near z = 0.
 TEST_CASE(
     "denoise passes: atrous iterations on packed filter texels match the CPU reference, and the packing keeps depth "
     "and normal") {
@@ -412,10 +411,18 @@ TEST_CASE(
     CAPTURE(w);
     Random r(97u + static_cast<std::uint32_t>(w));
     ImageD dn = random_depth_normal(r, w, h);
-    // Some normals facing -z, so that the depth's sign carries the normal's z sign.
-    for (int y = 0; y < h; y += 3)
+    // Normals along each axis, with either sign, and near z = 0 (where rebuilding z from x and y is
+    // ill-conditioned).
+    const std::array<std::array<double, 3>, 7> kNormals{{{0.3, -0.2, -0.93},
+                                                         {-0.9, 0.3, 0.1},
+                                                         {0.2, -0.97, 0.05},
+                                                         {0.7071, 0.7071, 0.0007},
+                                                         {0.7071, 0.7071, -0.0007},
+                                                         {0.6, -0.8, 0.0},
+                                                         {-0.5774, 0.5773, 0.5774}}};
+    for (int y = 0; y < h; y += 2)
       for (int x = 0; x < w; x += 2) {
-        const auto oct = asvgf::reference::oct_encode<double>({0.3, -0.2, -0.93});
+        const auto oct = asvgf::reference::oct_encode<double>(kNormals[static_cast<std::size_t>(x + 3 * y) % 7]);
         dn.at(x, y, 2) = oct[0], dn.at(x, y, 3) = oct[1];
       }
     const ImageD color = random_color(r, w, h, 0, 4, 0.5);
@@ -456,6 +463,10 @@ TEST_CASE(
     // The same fp32 result, stored by the image format and by packHalf2x16 (rounding may differ).
     DENOISE_CHECK_CLOSE(compare(got_history_first, t1.color, 4, fp16_tolerance(0)), "first history tap");
     DENOISE_CHECK_CLOSE(compare(got_history, t2.color, 4, fp16_tolerance(0)), "middle history tap");
+    // Depth to the bit; normal x and y within one fp16 ulp (2^-11 below 1: a device may round
+    // toward zero), z rebuilt within min(sqrt(d), d / |z|) for d = 1.4e-3 (the largest change of
+    // 1 - x^2 - y^2, 2 (|x| + |y|) 2^-11), which also holds its sign wherever |z| exceeds the bound;
+    // the next iteration passes both on unchanged.
     int packing_errors = 0;
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
@@ -464,8 +475,10 @@ TEST_CASE(
         const auto packed =
             asvgf::reference::oct_decode<double>({t1.depth_normal.at(x, y, 2), t1.depth_normal.at(x, y, 3)});
         const bool depth_kept = t1.depth_normal.at(x, y, 0) == z && t2.depth_normal.at(x, y, 0) == z;
-        bool normal_kept = z == 0.0 || (std::abs(packed[0] - n[0]) <= 1.0 / 2048 &&
-                                        std::abs(packed[1] - n[1]) <= 1.0 / 2048 && (packed[2] < 0.0) == (n[2] < 0.0));
+        constexpr double kXy = 1.0 / 2048, kD = 1.4e-3;
+        const double z_bound = std::min(std::sqrt(kD), kD / std::abs(n[2]));
+        bool normal_kept = z == 0.0 || (std::abs(packed[0] - n[0]) <= kXy && std::abs(packed[1] - n[1]) <= kXy &&
+                                        std::abs(packed[2] - n[2]) <= z_bound);
         normal_kept = normal_kept && t2.depth_normal.at(x, y, 2) == t1.depth_normal.at(x, y, 2) &&
                       t2.depth_normal.at(x, y, 3) == t1.depth_normal.at(x, y, 3);
         if (!depth_kept || !normal_kept) ++packing_errors;
@@ -477,6 +490,12 @@ TEST_CASE(
   const auto img = g.add_image("color_in", 8, 8, F::RGBA16F), dn = g.add_image("depth_normal", 8, 8, F::RGBA32F);
   CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("out", 8 * 8 * 16)}, 1, settings),
                   std::invalid_argument);
+  // A buffer or image that does not cover depth_normal would be read or written out of range.
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("small", 8 * 8 * 16 - 16)}, 0, settings),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_image("wide", 9, 8, F::RGBA16F)}, 0, settings),
+                  std::invalid_argument);
+  CHECK_NOTHROW(passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("fits", 8 * 8 * 16)}, 0, settings));
 }
 
 TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and ACES tone curves), zeroes and counts non-finite radiance") {

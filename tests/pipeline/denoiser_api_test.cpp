@@ -125,6 +125,9 @@ TEST_CASE("denoiser API: images and settings it cannot use are refused naming th
   asvgf::DenoiserConfig tap{.width = 4, .height = 4};
   tap.settings.history_tap = 7;
   CHECK(settings_error(tap).find("history_tap") != std::string::npos);
+  asvgf::DenoiserConfig sigma{.width = 4, .height = 4};
+  sigma.settings.sigma_n = std::numeric_limits<float>::infinity();
+  CHECK(settings_error(sigma).find("must be finite") != std::string::npos);
 
   asvgf::Denoiser denoiser(*device, {.width = 4, .height = 4, .method = asvgf::DenoiseMethod::Ema});
   const hal::ImageHandle f32 = device->create_image({"f32", 4, 4, hal::Format::RGBA32F});
