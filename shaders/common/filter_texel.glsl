@@ -17,13 +17,20 @@
 #ifndef ASVGF_COMMON_FILTER_TEXEL_GLSL
 #define ASVGF_COMMON_FILTER_TEXEL_GLSL
 
+// Colour and variance as four halves: lossless for the RGBA16F values the filter carries (also the
+// first iteration's shared-memory tile).
+uvec2 pack_color_halves(vec4 color_variance) {
+  return uvec2(packHalf2x16(color_variance.rg), packHalf2x16(color_variance.ba));
+}
+vec4 unpack_color_halves(uvec2 u) { return vec4(unpackHalf2x16(u.x), unpackHalf2x16(u.y)); }
+
+// z > 0 with a unit normal n; z = 0 (no hit) packs as depth 0.
 uvec4 pack_filter_texel(vec4 color_variance, float z, vec3 n) {
   const float signed_z = n.z < 0.0 ? -z : z;
-  return uvec4(packHalf2x16(color_variance.rg), packHalf2x16(color_variance.ba), floatBitsToUint(signed_z),
-               packHalf2x16(n.xy));
+  return uvec4(pack_color_halves(color_variance), floatBitsToUint(signed_z), packHalf2x16(n.xy));
 }
 
-vec4 filter_texel_color(uvec4 t) { return vec4(unpackHalf2x16(t.x), unpackHalf2x16(t.y)); }
+vec4 filter_texel_color(uvec4 t) { return unpack_color_halves(t.xy); }
 float filter_texel_variance(uvec4 t) { return unpackHalf2x16(t.y).y; }
 float filter_texel_depth(uvec4 t) { return abs(uintBitsToFloat(t.z)); }
 

@@ -52,8 +52,9 @@ struct Tap {
 #if defined(PACKED_OUT) && !defined(PACKED_IN)
 // Step 1 only: the workgroup's 8x8 pixels and their taps lie in one 12x12 block, fetched once into
 // shared memory (colour as halves, decoded normal): 5.5 fetches a pixel instead of 58, and 2.25
-// octahedral decodes instead of 24 (docs/performance.md, step 11). Entries outside the image hold the nearest
-// pixel's values, which is what the variance prefilter's clamped reads want; taps skip them.
+// octahedral decodes instead of 24 (docs/performance.md, step 11). Entries outside the image hold
+// the nearest pixel's values, which is what the variance prefilter's clamped reads want; taps skip
+// them.
 const int kApron = 2;
 const int kTile = 8 + 2 * kApron;
 shared uvec2 tile_color[kTile * kTile];
@@ -68,16 +69,16 @@ void load_tile() {
     const ivec2 q = clamp_pixel(tile_origin() + ivec2(k % kTile, k / kTile));
     const vec4 c = texelFetch(color_in, q, 0);
     const Surface s = surface_from(texelFetch(depth_normal, q, 0));
-    tile_color[k] = uvec2(packHalf2x16(c.rg), packHalf2x16(c.ba));
+    tile_color[k] = pack_color_halves(c);
     tile_surface[k] = vec4(s.z, s.n);
   }
 }
 Tap read_tap(ivec2 q) {
   const int k = tile_index(q);
   const vec4 t = tile_surface[k];
-  return Tap(vec4(unpackHalf2x16(tile_color[k].x), unpackHalf2x16(tile_color[k].y)), t.x, t.yzw);
+  return Tap(unpack_color_halves(tile_color[k]), t.x, t.yzw);
 }
-float variance_at(ivec2 q) { return unpackHalf2x16(tile_color[tile_index(q)].y).y; }
+float variance_at(ivec2 q) { return unpack_color_halves(tile_color[tile_index(q)]).a; }
 #elif defined(PACKED_IN)
 // Storage-buffer loads, not texel fetches: the fetches' issue rate bounded the iteration (0.081
 // against 0.097 ms at 1080p on the H200, docs/performance.md step 13).
