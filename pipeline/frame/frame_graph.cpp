@@ -80,19 +80,18 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   // Re-shaded samples only for GradientSource::Reshaded; Reprojected estimates inside add_denoiser.
   const bool adaptive = denoise.adaptive && denoise.gradient_source == passes::GradientSource::Reshaded;
   const bool gradients = adaptive && s.scene_moved;
-  std::optional<ResourceId> gradient_seeds;
+  std::optional<passes::CarriedSamples> carried;
   ResourceId gradient_prev = 0;
   if (adaptive) {
-    gradient_seeds = g.add_image("gradient_seeds", w, h, F::RGBA32Uint);
     gradient_prev = g.add_image("gradient_prev_luminance", gw, gh, F::RGBA32F);  // xy used
+    carried = {g.add_image("gradient_seeds", gw, gh, F::RGBA32Uint), gradient_prev};
     const ResourceId claims = g.add_buffer("gradient_claims", std::uint64_t(gw) * gh * 4);
-    passes::add_gradient_select(
-        g, pipelines_, scene,
-        {vbuffer, seeds, illumination, depth_normal, claims, *gradient_seeds, gradient_prev, split}, s.frame, w, h,
-        gradients ? "" : not_moved);
+    passes::add_gradient_select(g, pipelines_, scene,
+                                {vbuffer, seeds, illumination, depth_normal, claims, *carried, split}, s.frame, w, h,
+                                gradients ? "" : not_moved);
   }
-  passes::add_pathtrace(g, pipelines_, scene, vbuffer, gradients ? gradient_seeds : std::nullopt, illumination, seeds,
-                        rays, {s.frame, s.seed, s.max_bounces, s.spp, s.demodulate}, w, h, "pathtrace",
+  passes::add_pathtrace(g, pipelines_, scene, vbuffer, gradients ? carried : std::nullopt, illumination, seeds, rays,
+                        {s.frame, s.seed, s.max_bounces, s.spp, s.demodulate}, w, h, "pathtrace",
                         split ? std::optional(passes::SpecularTargets{*specular, *specular_albedo}) : std::nullopt);
   std::optional<ResourceId> specular_motion;
   if (split) {

@@ -99,9 +99,9 @@ void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const Scen
 }
 
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                   graph::ResourceId visibility, std::optional<graph::ResourceId> gradient_seeds,
-                   graph::ResourceId illumination, graph::ResourceId rng_seed, graph::ResourceId ray_counter,
-                   const PathtraceSettings& s, std::uint32_t width, std::uint32_t height, const std::string& name,
+                   graph::ResourceId visibility, std::optional<CarriedSamples> carried, graph::ResourceId illumination,
+                   graph::ResourceId rng_seed, graph::ResourceId ray_counter, const PathtraceSettings& s,
+                   std::uint32_t width, std::uint32_t height, const std::string& name,
                    std::optional<SpecularTargets> specular) {
   // [ray query][gradient samples][split signals]
   const hal::ShaderInfo* const variants[2][2][2] = {
@@ -109,7 +109,7 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
        {&shaders::pathtrace_software_gradients, &shaders::pathtrace_software_gradients_split}},
       {{&shaders::pathtrace_rayquery, &shaders::pathtrace_rayquery_split},
        {&shaders::pathtrace_rayquery_gradients, &shaders::pathtrace_rayquery_gradients_split}}};
-  const hal::ShaderInfo& shader = *variants[scene.ray_query ? 1 : 0][gradient_seeds ? 1 : 0][specular ? 1 : 0];
+  const hal::ShaderInfo& shader = *variants[scene.ray_query ? 1 : 0][carried ? 1 : 0][specular ? 1 : 0];
   const PathtraceParams params{uniform_camera<shaders::pathtrace_software_uniforms::Camera>(scene.camera),
                                width,
                                height,
@@ -125,7 +125,7 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
                                    {"illumination", illumination},
                                    {"rng_seed", rng_seed},
                                    {"ray_counter", ray_counter}});
-  if (gradient_seeds) bindings.push_back({"gradient_seeds", *gradient_seeds});
+  if (carried) bindings.insert(bindings.end(), {{"gradient_seeds", carried->seeds}, {"gradient_prev", carried->prev}});
   if (specular)
     bindings.insert(bindings.end(), {{"specular", specular->signal}, {"specular_albedo", specular->albedo}});
   add_compute_pass(graph, name, shader, pipelines.get<decltype(params)>(shader), std::move(bindings), to_bytes(params),
@@ -139,8 +139,7 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
   const GradientClearParams clear{width, height, sw, sh};
   add_compute_pass(graph, "gradient_clear", shaders::gradient_clear,
                    pipelines.get<GradientClearParams>(shaders::gradient_clear),
-                   {{"claims", t.claims}, {"gradient_seeds", t.gradient_seeds}, {"gradient_prev", t.gradient_prev}},
-                   to_bytes(clear), {width, height, 1})
+                   {{"claims", t.claims}, {"gradient_prev", t.carried.prev}}, to_bytes(clear), {sw, sh, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
   // Bids, then the winners write: the lowest bid wins whatever order invocations run in.
   const GradientSelectParams select{
@@ -171,8 +170,8 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
                     // No depth_normal: a winner passed its tests in gradient_select already.
                     {"claims", t.claims},
                     // Written only where a sample landed: gradient_clear's values stay elsewhere.
-                    {"gradient_seeds", t.gradient_seeds},
-                    {"gradient_prev", t.gradient_prev}},
+                    {"gradient_seeds", t.carried.seeds},
+                    {"gradient_prev", t.carried.prev}},
                    to_bytes(resolve), {sw, sh, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
 }

@@ -41,17 +41,22 @@ struct PathtraceSettings {
   std::uint32_t spp = 1;          // samples per pixel in this dispatch
   bool demodulate = true;         // false: illumination is radiance (no division by the albedo)
 };
-// `gradient_seeds` present: the A-SVGF variant that starts carried pixels from last frame's point.
+// What gradient_resolve writes for pathtrace, one entry a 3x3 stratum: the carried seed and surface
+// point (RGBA32Uint) and which pixel of the stratum gets them (gradient_prev, RGBA32F, .y: 0-8 or -1).
+struct CarriedSamples {
+  graph::ResourceId seeds, prev;
+};
+// `carried` present: the A-SVGF variant that starts carried pixels from last frame's point.
 // `specular` present: the split variant writes the specular signal (RGBA32F) and the GGX lobe's
 // albedo (RGBA16F) there, and the diffuse signal, with the one-signal luminance in .a, to
 // `illumination` (the gbuffer writes the diffuse albedo: GbufferTargets::diffuse_albedo_only).
 // `ray_counter`: a buffer whose first uint the pass adds the rays it traced to (closest-hit and
 // shadow rays after the primary hit; the primary ray is the gbuffer's).
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                   graph::ResourceId visibility, std::optional<graph::ResourceId> gradient_seeds,
-                   graph::ResourceId illumination, graph::ResourceId rng_seed, graph::ResourceId ray_counter,
-                   const PathtraceSettings& settings, std::uint32_t width, std::uint32_t height,
-                   const std::string& name = "pathtrace", std::optional<SpecularTargets> specular = std::nullopt);
+                   graph::ResourceId visibility, std::optional<CarriedSamples> carried, graph::ResourceId illumination,
+                   graph::ResourceId rng_seed, graph::ResourceId ray_counter, const PathtraceSettings& settings,
+                   std::uint32_t width, std::uint32_t height, const std::string& name = "pathtrace",
+                   std::optional<SpecularTargets> specular = std::nullopt);
 
 struct GradientSelectTargets {
   graph::ResourceId visibility;    // persistent: last frame's version is read
@@ -59,7 +64,7 @@ struct GradientSelectTargets {
   graph::ResourceId illumination;  // persistent: last frame's version is read
   graph::ResourceId depth_normal;  // this frame's
   graph::ResourceId claims;        // transient buffer, one uint per stratum
-  graph::ResourceId gradient_seeds, gradient_prev;
+  CarriedSamples carried;          // stratum-sized
   bool luminance_in_alpha = false;  // illumination holds pathtrace's split signals
 };
 // Three passes: gradient_clear, gradient_select (bids), gradient_resolve (the winners write). Left

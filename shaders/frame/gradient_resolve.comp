@@ -1,7 +1,8 @@
 // gradient_resolve (A-SVGF forward projection, step 2 of 2): for each stratum of this frame that a
 // sample of last frame won in gradient_select, redo that sample's projection (the same function),
-// give the landing pixel last frame's seed and surface point, and record last frame's luminance of
-// the sample for the gradient pass.
+// store last frame's seed and surface point for the stratum (gradient_seeds is stratum-sized;
+// gradient_prev.y names the landing pixel in it), and record last frame's luminance of the sample
+// for the gradient pass.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -42,7 +43,7 @@ void main() {
   if (winner == 0xFFFFFFFFu) return;  // no sample landed here: gradient_clear's "none" stays
   Projection p = project_sample(ivec2(int(winner % params.strata_width), int(winner / params.strata_width)));
   uint seed = texelFetch(prev_rng_seed, p.from, 0).x;
-  imageStore(gradient_seeds, p.to, uvec4(seed, p.vis.y, p.vis.z, p.vis.w));
+  imageStore(gradient_seeds, sq, uvec4(seed, p.vis.y, p.vis.z, p.vis.w));
   vec4 prev = texelFetch(prev_illumination, p.from, 0);
   float l_prev = params.luminance_in_alpha != 0u ? prev.a : luminance(prev.rgb);
   imageStore(gradient_prev, sq, vec4(l_prev, float((p.to.x % 3) + 3 * (p.to.y % 3)), 0.0, 0.0));

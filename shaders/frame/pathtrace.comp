@@ -3,7 +3,7 @@
 // BSDF sampling (cosine-weighted on Lambertian surfaces, common/bsdf.glsl's lobe mixture on glossy
 // ones) by multiple importance sampling (power heuristic), Russian roulette after two bounces. Writes demodulated illumination (radiance / demodulation_albedo,
 // guarded) and the random seed each pixel used. With GRADIENT_SAMPLES, pixels that gradient_select gave a
-// carried seed start from last frame's surface point with last frame's seed instead.
+// carried seed (gradient_resolve) start from last frame's surface point with last frame's seed instead.
 // With SPLIT_SPECULAR the radiance is written as two signals, as Q2RTX and NRD filter them: what
 // the primary surface's GGX lobe reflects (`specular`, divided by that lobe's directional albedo)
 // and the rest (`illumination`, divided by the diffuse albedo), with the luminance of the one-signal
@@ -44,7 +44,10 @@ layout(set = 0, binding = 10) uniform utexture2D visibility;
 layout(set = 0, binding = 11, rgba32f) writeonly uniform image2D illumination;
 layout(set = 0, binding = 12, r32ui) writeonly uniform uimage2D rng_seed;
 #ifdef GRADIENT_SAMPLES
+// One entry a 3x3 stratum (gradient_resolve): the carried seed and surface point, for the pixel
+// that gradient_prev.y names (0-8; -1: none). Entries of strata without a sample are stale.
 layout(set = 0, binding = 13) uniform utexture2D gradient_seeds;
+layout(set = 0, binding = 17) uniform texture2D gradient_prev;
 #endif
 // Rays traced this frame (closest and shadow), for the rays-per-second benchmark.
 layout(set = 0, binding = 14, std430) buffer RayCounter { uint count; } ray_counter;
@@ -317,9 +320,10 @@ void shade_pixel(ivec2 p) {
   const uvec4 own_vis = vis;
   uint seed = pixel_seed(uvec2(p), params.width, params.frame, params.seed);
 #ifdef GRADIENT_SAMPLES
-  uvec4 carried = texelFetch(gradient_seeds, p, 0);
-  if (carried.x != 0u) {
+  const ivec2 stratum = p / 3;
+  if (texelFetch(gradient_prev, stratum, 0).y == float(p.x % 3 + 3 * (p.y % 3))) {
     // Last frame's sample, forward-projected here: same surface point, same random numbers.
+    const uvec4 carried = texelFetch(gradient_seeds, stratum, 0);
     seed = carried.x;
     Triangle t = load_triangle(carried.y);
     vis = uvec4(t.instance + 1u, carried.y, carried.z, carried.w);
