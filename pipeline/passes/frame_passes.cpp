@@ -169,7 +169,8 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
                     {"prev_illumination", t.illumination, true},
                     // No depth_normal: a winner passed its tests in gradient_select already.
                     {"claims", t.claims},
-                    // Written only where a sample landed: gradient_clear's values stay elsewhere.
+                    // Written only where a sample landed: elsewhere gradient_prev keeps gradient_clear's -1
+                    // and the seeds are undefined (pathtrace reads them only where gradient_prev.y names a pixel).
                     {"gradient_seeds", t.carried.seeds},
                     {"gradient_prev", t.carried.prev}},
                    to_bytes(resolve), {sw, sh, 1})

@@ -42,7 +42,8 @@ struct PathtraceSettings {
   bool demodulate = true;         // false: illumination is radiance (no division by the albedo)
 };
 // What gradient_resolve writes for pathtrace, one entry a 3x3 stratum: the carried seed and surface
-// point (RGBA32Uint) and which pixel of the stratum gets them (gradient_prev, RGBA32F, .y: 0-8 or -1).
+// point (RGBA32Uint) and which pixel of the stratum gets them (gradient_prev, RGBA32F, .y: 0-8; -1,
+// gradient_clear's, where no sample landed).
 struct CarriedSamples {
   graph::ResourceId seeds, prev;
 };

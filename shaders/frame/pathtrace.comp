@@ -45,7 +45,7 @@ layout(set = 0, binding = 11, rgba32f) writeonly uniform image2D illumination;
 layout(set = 0, binding = 12, r32ui) writeonly uniform uimage2D rng_seed;
 #ifdef GRADIENT_SAMPLES
 // One entry a 3x3 stratum (gradient_resolve): the carried seed and surface point, for the pixel
-// that gradient_prev.y names (0-8; -1: none). Entries of strata without a sample are stale.
+// that gradient_prev.y names (0-8; -1: none). Entries of strata without a sample are undefined.
 layout(set = 0, binding = 13) uniform utexture2D gradient_seeds;
 layout(set = 0, binding = 17) uniform texture2D gradient_prev;
 #endif
