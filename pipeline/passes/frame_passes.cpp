@@ -157,6 +157,7 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
                    pipelines.get<GradientSelectParams>(shaders::gradient_select),
                    {{"triangles", scene.triangles},
                     {"prev_visibility", t.visibility, true},
+                    {"prev_rng_seed", t.rng_seed, true},
                     {"depth_normal", t.depth_normal},
                     {"claims", t.claims}},
                    to_bytes(select), {sw, sh, 1})

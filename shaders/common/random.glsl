@@ -9,8 +9,7 @@ uint pcg_hash(uint v) {
   return (word >> 22u) ^ word;
 }
 
-// A seed that is never 0: 0 once marked "no carried seed"; nothing relies on it now, and it stays so
-// that the same seed gives the same images.
+// A seed that is never 0: pathtrace stores 0 for a pixel that shaded a carried gradient sample.
 uint pixel_seed(uvec2 pixel, uint width, uint frame, uint global_seed) {
   uint s = pcg_hash(pixel.y * width + pixel.x + pcg_hash(frame + pcg_hash(global_seed)));
   return s == 0u ? 1u : s;

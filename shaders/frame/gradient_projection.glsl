@@ -8,7 +8,8 @@
 #include "common/scene_data.glsl"
 
 // Needs: params (width, height, strata_width, frame, camera), `triangles` (this frame's),
-// `prev_visibility`, `depth_normal` (this frame's), and a global `Camera cam` loaded from params.
+// `prev_visibility`, `prev_rng_seed`, `depth_normal` (this frame's), and a global `Camera cam`
+// loaded from params.
 
 struct Projection {
   bool ok;
@@ -25,8 +26,12 @@ Projection project_sample(ivec2 s) {
   uint pick = pcg_hash(uint(s.y) * params.strata_width + uint(s.x) + pcg_hash(params.frame)) % 9u;
   r.from = 3 * s + ivec2(int(pick % 3u), int(pick / 3u));
   bool ok = r.from.x < int(params.width) && r.from.y < int(params.height);
-  uvec4 vis = texelFetch(prev_visibility, min(r.from, ivec2(int(params.width) - 1, int(params.height) - 1)), 0);
+  const ivec2 from = min(r.from, ivec2(int(params.width) - 1, int(params.height) - 1));
+  uvec4 vis = texelFetch(prev_visibility, from, 0);
   ok = ok && vis.x != 0u && vis.x != 0xFFFFFFFFu;  // nothing, or a light: no shading to compare
+  // Seed 0: the pixel shaded a carried sample last frame, another point than its visibility names,
+  // so its luminance would not match a re-shading of that visibility.
+  ok = ok && texelFetch(prev_rng_seed, from, 0).x != 0u;
   r.vis = vis;
 
   uint tri = ok ? vis.y : 0u;

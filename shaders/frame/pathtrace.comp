@@ -321,7 +321,8 @@ void shade_pixel(ivec2 p) {
   uint seed = pixel_seed(uvec2(p), params.width, params.frame, params.seed);
 #ifdef GRADIENT_SAMPLES
   const ivec2 stratum = p / 3;
-  if (texelFetch(gradient_prev, stratum, 0).y == float(p.x % 3 + 3 * (p.y % 3))) {
+  const bool carried_sample = texelFetch(gradient_prev, stratum, 0).y == float(p.x % 3 + 3 * (p.y % 3));
+  if (carried_sample) {
     // Last frame's sample, forward-projected here: same surface point, same random numbers.
     const uvec4 carried = texelFetch(gradient_seeds, stratum, 0);
     seed = carried.x;
@@ -391,6 +392,11 @@ void shade_pixel(ivec2 p) {
   imageStore(specular, p, vec4(specular_radiance / max(ggx_albedo, vec3(kAlbedoGuard)), first_specular_distance));
 #else
   imageStore(illumination, p, vec4(one_signal, 0.0));
+#endif
+#ifdef GRADIENT_SAMPLES
+  // A carried sample shaded last frame's point, not this pixel's visibility: seed 0 tells next
+  // frame's forward projection not to pick the pixel (its seed and visibility do not match).
+  if (carried_sample) seed = 0u;
 #endif
   imageStore(rng_seed, p, uvec4(seed));
 }
