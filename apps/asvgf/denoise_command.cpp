@@ -64,6 +64,8 @@ bool has_gradient_samples(const render::ExrImage& image) {
 }
 
 int run_denoise(DenoiseOptions& o) {
+  o.device.size = "1x1";  // the frames set the size
+  finish_scene_options(o.device);
   apply_input_folder(o);
   for (const auto& [name, value] : {std::pair{"--color", &o.color},
                                     {"--albedo", &o.albedo},
@@ -75,8 +77,6 @@ int run_denoise(DenoiseOptions& o) {
     throw CLI::ValidationError("--gradient", "gradient samples are for --method asvgf only");
   if (!o.gradient.empty() && o.device.gradient_source == "reprojected")
     throw CLI::ValidationError("--gradient", "--gradient-source reprojected estimates the gradient itself");
-  o.device.size = "1x1";  // the frames set the size
-  finish_scene_options(o.device);
 
   const FramePattern color("--color", o.color), albedo("--albedo", o.albedo), normal("--normal", o.normal),
       depth("--depth", o.depth), motion("--motion", o.motion);

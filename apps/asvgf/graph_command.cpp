@@ -14,6 +14,7 @@
 #include "hal_record/record_device.hpp"
 #include "render/scene_gpu.hpp"
 #include "scene/builtin.hpp"
+#include "scene_options.hpp"
 
 namespace asvgf::cli {
 namespace {
@@ -32,11 +33,9 @@ struct GraphOptions {
 int run_graph(const GraphOptions& o) {
   frame::FrameSettings settings;
   settings.method = *frame::method_from_string(o.method);  // validated by the CLI
-  if (std::sscanf(o.size.c_str(), "%ux%u", &settings.width, &settings.height) != 2 || settings.width == 0 ||
-      settings.height == 0 || settings.width > 16384 || settings.height > 16384) {
-    std::fprintf(stderr, "asvgf graph: error: --size '%s' is not WIDTHxHEIGHT with both in 1..16384\n", o.size.c_str());
-    return 2;
-  }
+  const ImageSize size = parse_size_option("--size", o.size);
+  settings.width = size.width;
+  settings.height = size.height;
   settings.denoise.atrous_iterations = o.atrous_iterations;
   settings.specular_split = o.specular_split;
 

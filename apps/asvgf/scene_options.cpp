@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
+#include <string_view>
 
 #include "hal/fault.hpp"
 #include "hal/validate.hpp"
@@ -57,57 +59,75 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
                "On glossy scenes, denoise diffuse and specular light apart, each with its own histories "
                "(ema, svgf, asvgf with the re-shaded gradient; not with --aovs)");
   cmd.add_option("--specular-atrous-iterations", o.denoise.specular_atrous_iterations,
-                 "A-trous iterations over the specular signal (--specular-split; Q2RTX 3)")
-      ->check(CLI::Range(0, 16))
+                 "A-trous iterations over the specular signal (--specular-split; Q2RTX 3); " +
+                     std::string(setting_range("specular_atrous_iterations")))
       ->capture_default_str();
   add_denoise_options(cmd, o);
 }
 
 void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
   auto& d = o.denoise;
-  cmd.add_option("--alpha", d.alpha, "Temporal blend factor (SVGF 0.2)")
-      ->check(CLI::Range(0.001, 1.0))
-      ->capture_default_str();
-  cmd.add_option("--moments-alpha", d.moments_alpha, "Moments blend factor (SVGF 0.2)")
-      ->check(CLI::Range(0.001, 1.0))
-      ->capture_default_str();
-  cmd.add_option("--atrous-iterations", d.atrous_iterations, "A-trous iterations (SVGF 5)")
-      ->check(CLI::Range(0, 16))
-      ->capture_default_str();
-  cmd.add_option("--sigma-z", d.sigma_z, "Depth edge-stopping (SVGF 1)")->capture_default_str();
-  cmd.add_option("--sigma-n", d.sigma_n, "Normal edge-stopping exponent (SVGF 128)")->capture_default_str();
-  cmd.add_option("--sigma-l", d.sigma_l, "Luminance edge-stopping (SVGF 4)")->capture_default_str();
+  // The ranges are the library's (asvgf::check_settings, run by finish_scene_options), so --help,
+  // the command line and the API refuse the same values.
+  auto add = [&](const char* option, auto& value, const char* setting, const std::string& what) {
+    cmd.add_option(option, value, what + "; " + std::string(setting_range(setting)))->capture_default_str();
+  };
+  add("--alpha", d.alpha, "alpha", "Temporal blend factor (SVGF 0.2)");
+  add("--moments-alpha", d.moments_alpha, "moments_alpha", "Moments blend factor (SVGF 0.2)");
+  add("--atrous-iterations", d.atrous_iterations, "atrous_iterations", "A-trous iterations (SVGF 5)");
+  add("--sigma-z", d.sigma_z, "sigma_z", "Depth edge-stopping (SVGF 1)");
+  add("--sigma-n", d.sigma_n, "sigma_n", "Normal edge-stopping exponent (SVGF 128)");
+  add("--sigma-l", d.sigma_l, "sigma_l", "Luminance edge-stopping (SVGF 4)");
   cmd.add_option("--kernel", o.kernel, "A-trous kernel: b3spline (5x5, paper) or box (3x3, seed)")
       ->check(CLI::IsMember({"b3spline", "box"}))
       ->capture_default_str();
-  cmd.add_option("--gradient-iterations", d.gradient_iterations, "A-trous iterations over the gradient (Q2RTX 3)")
-      ->check(CLI::Range(0, 8))
-      ->capture_default_str();
+  add("--gradient-iterations", d.gradient_iterations, "gradient_iterations",
+      "A-trous iterations over the gradient (Q2RTX 3)");
   cmd.add_option("--gradient-source", o.gradient_source,
                  "A-SVGF's gradient: reshaded (the renderer re-shades last frame's samples; paper) or reprojected "
                  "(estimated from reprojected noisy luminance, no renderer help; Q2RTX)")
       ->check(CLI::IsMember({"reshaded", "reprojected"}))
       ->capture_default_str();
-  cmd.add_option("--history-cap", d.history_cap, "Maximum history length in frames")
-      ->check(CLI::Range(1.0, 4096.0))
-      ->capture_default_str();
-  cmd.add_option("--history-tap", d.history_tap, "A-trous iteration whose output feeds the colour history")
-      ->check(CLI::Range(0, 15))
-      ->capture_default_str();
+  add("--history-cap", d.history_cap, "history_cap", "Maximum history length in frames");
+  add("--history-tap", d.history_tap, "history_tap", "A-trous iteration whose output feeds the colour history");
+}
+
+std::optional<ImageSize> parse_size(std::string_view text) {
+  auto number = [&](std::string_view digits) -> std::optional<std::uint32_t> {
+    if (digits.empty() || digits.size() > 5) return std::nullopt;  // 16384 has 5 digits: no overflow
+    std::uint32_t v = 0;
+    for (const char c : digits) {
+      if (c < '0' || c > '9') return std::nullopt;  // no sign, space or trailing text
+      v = v * 10 + std::uint32_t(c - '0');
+    }
+    if (v == 0 || v > kMaxImageSide) return std::nullopt;
+    return v;
+  };
+  const auto x = text.find('x');
+  if (x == std::string_view::npos) return std::nullopt;
+  const auto w = number(text.substr(0, x)), h = number(text.substr(x + 1));
+  if (!w || !h) return std::nullopt;
+  return ImageSize{*w, *h};
+}
+
+ImageSize parse_size_option(const std::string& option, const std::string& text) {
+  const auto size = parse_size(text);
+  if (!size)
+    throw CLI::ValidationError(option, "'" + text + "' is not WIDTHxHEIGHT with both in 1.." +
+                                           std::to_string(kMaxImageSide));
+  return *size;
 }
 
 void finish_scene_options(SceneOptions& o) {
-  unsigned w = 0, h = 0;
-  char tail = 0;
-  if (std::sscanf(o.size.c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w == 0 || h == 0 || w > 16384 || h > 16384)
-    throw CLI::ValidationError("--size", "'" + o.size + "' is not WIDTHxHEIGHT with both in 1..16384");
-  o.width = w;
-  o.height = h;
+  const ImageSize size = parse_size_option("--size", o.size);
+  o.width = size.width;
+  o.height = size.height;
   o.denoise.kernel = o.kernel == "box" ? passes::AtrousKernel::Box : passes::AtrousKernel::B3Spline;
   o.denoise.gradient_source =
       o.gradient_source == "reprojected" ? passes::GradientSource::Reprojected : passes::GradientSource::Reshaded;
-  if (o.denoise.history_tap >= std::max(1, o.denoise.atrous_iterations) && o.denoise.atrous_iterations > 0)
-    throw CLI::ValidationError("--history-tap", "must be below --atrous-iterations");
+  if (const auto problem = check_settings(o.denoise))
+    throw CLI::ValidationError(*problem->setting.option ? problem->setting.option : problem->setting.setting,
+                               problem->message());
 }
 
 scene::Scene load_scene(const SceneOptions& o) {

@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 #include <memory>
+#include <optional>
+#include <string_view>
 #include <string>
 
 #include "render/renderer.hpp"
@@ -38,8 +40,19 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& options);
 void add_device_options(CLI::App& cmd, SceneOptions& options);
 // --backend alone (commands with their own scene options, e.g. report).
 void add_backend_option(CLI::App& cmd, SceneOptions& options);
-// Checks what CLI11 cannot (size syntax); throws CLI::ValidationError naming the option.
+// Checks what CLI11 cannot (size syntax, the denoiser settings through asvgf::check_settings);
+// throws CLI::ValidationError naming the option and its range (exit 2).
 void finish_scene_options(SceneOptions& options);
+
+struct ImageSize {
+  std::uint32_t width = 0, height = 0;
+};
+constexpr std::uint32_t kMaxImageSide = 16384;
+// The one WIDTHxHEIGHT parser: decimal digits only, both sides in 1..kMaxImageSide, nothing
+// after the height (no wrap-around: 4294967297x1 is refused, not read as 1x1).
+std::optional<ImageSize> parse_size(std::string_view text);
+// parse_size, or CLI::ValidationError naming `option`.
+ImageSize parse_size_option(const std::string& option, const std::string& text);
 // --backend, else $ASVGF_BACKEND, else "vulkan".
 std::string chosen_backend(const std::string& option);
 // The scene the options name: built-in, or loaded from the file.

@@ -36,14 +36,6 @@ std::optional<std::size_t> view_index(const std::string& name) {
   return std::nullopt;
 }
 
-Size parse_size(const std::string& option, const std::string& text) {
-  unsigned w = 0, h = 0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w == 0 || h == 0 || w > 16384 || h > 16384)
-    throw CLI::ValidationError(option, "'" + text + "' is not WIDTHxHEIGHT with both in 1..16384");
-  return {w, h};
-}
-
 void add_demo_options(CLI::App& app, DemoOptions& o) {
   o.scene.animation = "static";  // the demo's default: the user moves the light
   cli::add_scene_options(app, o.scene);
@@ -75,7 +67,7 @@ void add_demo_options(CLI::App& app, DemoOptions& o) {
 void finish(DemoOptions& o) {
   cli::finish_scene_options(o.scene);
   o.scene.backend = cli::chosen_backend(o.scene.backend);  // --backend, else $ASVGF_BACKEND (checked here)
-  if (!o.window.empty()) o.window_size = parse_size("--window", o.window);
+  if (!o.window.empty()) o.window_size = cli::parse_size_option("--window", o.window);
   if (!o.resize_at.empty()) {
     try {
       o.resize_frame = std::stoi(o.resize_at.at(0));
@@ -83,7 +75,7 @@ void finish(DemoOptions& o) {
       throw CLI::ValidationError("--resize-at", "'" + o.resize_at.at(0) + "' is not a frame number");
     }
     if (o.resize_frame < 0) throw CLI::ValidationError("--resize-at", "the frame must be >= 0");
-    o.resize_to = parse_size("--resize-at", o.resize_at.at(1));
+    o.resize_to = cli::parse_size_option("--resize-at", o.resize_at.at(1));
   }
 }
 

@@ -11,9 +11,7 @@
 
 namespace asvgf::demo {
 
-struct Size {
-  std::uint32_t width = 0, height = 0;
-};
+using Size = cli::ImageSize;
 
 struct DemoOptions {
   cli::SceneOptions scene;
@@ -48,6 +46,5 @@ extern const char* const kControlsHelp;
 void add_demo_options(CLI::App& app, DemoOptions& options);
 // Checks what CLI11 cannot (WxH syntax, --screenshot needing --frames); throws CLI::ValidationError.
 void finish(DemoOptions& options);
-Size parse_size(const std::string& option, const std::string& text);
 
 }  // namespace asvgf::demo

@@ -11,6 +11,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
 
 namespace asvgf {
 
@@ -44,5 +48,26 @@ struct DenoiseSettings {
   // do not predict; 4 measured best of 2-5 at 1080p (3 at 128 and 256 px).
   int specular_atrous_iterations = 4;
 };
+
+// The one check of every setting, used by asvgf::Denoiser, the renderer and every command of the
+// `asvgf` tool and the demo: a setting outside its range, NaN or infinite is refused naming the
+// setting, its command-line option and its valid range.
+struct SettingRange {
+  const char* setting;  // the DenoiseSettings member
+  const char* option;   // the command-line option that sets it, "" where none does
+  const char* range;    // the valid values, as README and --help state them
+};
+// Every checked setting with its range, in declaration order.
+const std::vector<SettingRange>& setting_ranges();
+// The range text of `setting` (a DenoiseSettings member name), empty if unknown.
+std::string_view setting_range(std::string_view setting);
+
+struct SettingProblem {
+  SettingRange setting;
+  std::string value;  // the refused value as text
+  std::string message() const;  // e.g. "alpha (--alpha) is nan, valid: (0, 1]"
+};
+// The first setting outside its range, or nothing.
+std::optional<SettingProblem> check_settings(const DenoiseSettings& settings);
 
 }  // namespace asvgf

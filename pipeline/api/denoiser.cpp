@@ -58,22 +58,9 @@ void check_config(const hal::Device& device, const DenoiserConfig& c) {
     throw hal::Error(
         hal::ErrorKind::InvalidDescriptor, "denoiser size",
         std::to_string(c.width) + "x" + std::to_string(c.height) + " is outside 1.." + std::to_string(max));
-  const auto& s = c.settings;
-  auto fail = [](const char* what, const std::string& why) {
-    throw hal::Error(hal::ErrorKind::InvalidDescriptor, std::string("denoiser setting ") + what, why);
-  };
-  if (!(s.alpha > 0.0f && s.alpha <= 1.0f)) fail("alpha", "must be in (0, 1]");
-  if (!(s.moments_alpha > 0.0f && s.moments_alpha <= 1.0f)) fail("moments_alpha", "must be in (0, 1]");
-  if (s.atrous_iterations < 0 || s.atrous_iterations > 16) fail("atrous_iterations", "must be in 0..16");
-  if (s.gradient_iterations < 0 || s.gradient_iterations > 8) fail("gradient_iterations", "must be in 0..8");
-  if (s.history_tap < 0 || (s.atrous_iterations > 0 && s.history_tap >= s.atrous_iterations))
-    fail("history_tap", "must name one of the a-trous iterations (0.." + std::to_string(s.atrous_iterations - 1) + ")");
-  if (!(s.history_cap >= 1.0f)) fail("history_cap", "must be >= 1");
-  if (!(s.sigma_z > 0.0f) || !(s.sigma_n >= 0.0f) || !(s.sigma_l > 0.0f))
-    fail("sigma_z/sigma_n/sigma_l", "must be positive");
-  if (!std::isfinite(s.sigma_z) || !std::isfinite(s.sigma_n) || !std::isfinite(s.sigma_l))
-    fail("sigma_z/sigma_n/sigma_l", "must be finite");
-  if (!(s.exposure >= 0.0f) || !(s.exposure < 1e30f)) fail("exposure", "must be finite and >= 0");
+  if (const auto problem = check_settings(c.settings))
+    throw hal::Error(hal::ErrorKind::InvalidDescriptor, std::string("denoiser setting ") + problem->setting.setting,
+                     problem->message());
 }
 
 }  // namespace

@@ -18,6 +18,13 @@ bool pick_ray_query(const hal::Device& device, const RenderSettings& s) {
   return s.ray_query.value_or(device.capabilities().ray_query);
 }
 
+// The denoiser's settings pass the same check as asvgf::Denoiser's (asvgf/denoise_settings.hpp).
+void check_denoise_settings(const RenderSettings& s) {
+  if (const auto problem = check_settings(s.denoise))
+    throw hal::Error(hal::ErrorKind::InvalidDescriptor, std::string("denoiser setting ") + problem->setting.setting,
+                     problem->message());
+}
+
 }  // namespace
 
 Renderer::Renderer(hal::Device& device, const scene::Scene& scene, const RenderSettings& settings)
@@ -33,6 +40,7 @@ Renderer::Renderer(hal::Device& device, const scene::Scene& scene, const RenderS
                      std::to_string(settings.width) + "x" + std::to_string(settings.height) + " is outside 1.." +
                          std::to_string(max));
   if (settings.spp == 0) throw hal::Error(hal::ErrorKind::InvalidDescriptor, "spp", "samples per pixel must be >= 1");
+  check_denoise_settings(settings);
   set_batches();
   const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
   targets_.hdr = device.create_image({"hdr", settings.width, settings.height, hal::Format::RGBA32F, usage});
@@ -105,6 +113,7 @@ void Renderer::set_settings(const RenderSettings& s) {
       s.ray_query != settings_.ray_query)
     throw hal::Error(hal::ErrorKind::InvalidUsage, "renderer", "size, seed and tracing variant are fixed at creation");
   if (s.spp == 0) throw hal::Error(hal::ErrorKind::InvalidDescriptor, "spp", "samples per pixel must be >= 1");
+  check_denoise_settings(s);
   // Another method's histories hold another quantity, or nothing recent: start afresh.
   if (s.method != settings_.method) runtime_.reset_histories();
   if (s.debug_view && !targets_.debug) {

@@ -127,7 +127,7 @@ TEST_CASE("denoiser API: images and settings it cannot use are refused naming th
   CHECK(settings_error(tap).find("history_tap") != std::string::npos);
   asvgf::DenoiserConfig sigma{.width = 4, .height = 4};
   sigma.settings.sigma_n = std::numeric_limits<float>::infinity();
-  CHECK(settings_error(sigma).find("must be finite") != std::string::npos);
+  CHECK(settings_error(sigma).find("sigma_n (--sigma-n) is inf, valid: [0, inf), finite") != std::string::npos);
 
   asvgf::Denoiser denoiser(*device, {.width = 4, .height = 4, .method = asvgf::DenoiseMethod::Ema});
   const hal::ImageHandle f32 = device->create_image({"f32", 4, 4, hal::Format::RGBA32F});

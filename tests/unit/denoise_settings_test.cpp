@@ -1,0 +1,114 @@
+// The one check of the denoiser's settings (asvgf::check_settings): every setting refuses NaN,
+// infinities and values outside its range, naming the setting, its option and the range; the
+// defaults and the range ends pass.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <set>
+#include <string>
+
+#include "asvgf/denoise_settings.hpp"
+
+using namespace asvgf;
+
+namespace {
+
+constexpr float kNan = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+struct Case {
+  const char* setting;
+  std::function<void(DenoiseSettings&)> set;
+};
+
+}  // namespace
+
+TEST_CASE("denoiser settings: the defaults and every range's ends pass the check") {
+  CHECK_FALSE(check_settings(DenoiseSettings{}).has_value());
+  const Case good[] = {
+      {"alpha", [](auto& s) { s.alpha = 1.0f; }},
+      {"alpha", [](auto& s) { s.alpha = 1e-6f; }},
+      {"moments_alpha", [](auto& s) { s.moments_alpha = 1.0f; }},
+      {"atrous_iterations", [](auto& s) { s.atrous_iterations = 0, s.history_tap = 0; }},
+      {"atrous_iterations", [](auto& s) { s.atrous_iterations = 16; }},
+      {"sigma_n", [](auto& s) { s.sigma_n = 0.0f; }},
+      {"gradient_iterations", [](auto& s) { s.gradient_iterations = 8; }},
+      {"history_cap", [](auto& s) { s.history_cap = 1.0f; }},
+      {"history_cap", [](auto& s) { s.history_cap = 4096.0f; }},
+      {"history_tap", [](auto& s) { s.history_tap = s.atrous_iterations - 1; }},
+      {"min_history", [](auto& s) { s.min_history = 0.0f; }},
+      {"exposure", [](auto& s) { s.exposure = 0.0f; }},
+      {"specular_atrous_iterations", [](auto& s) { s.specular_atrous_iterations = 0; }},
+  };
+  for (const auto& c : good) {
+    DenoiseSettings s;
+    c.set(s);
+    CAPTURE(c.setting);
+    const auto problem = check_settings(s);
+    CHECK_MESSAGE(!problem, (problem ? problem->message() : std::string()));
+  }
+}
+
+TEST_CASE("denoiser settings: NaN, infinities and out-of-range values are refused naming the setting, option and range") {
+  const Case bad[] = {
+      {"alpha", [](auto& s) { s.alpha = kNan; }},
+      {"alpha", [](auto& s) { s.alpha = 0.0f; }},
+      {"alpha", [](auto& s) { s.alpha = 1.5f; }},
+      {"moments_alpha", [](auto& s) { s.moments_alpha = kNan; }},
+      {"moments_alpha", [](auto& s) { s.moments_alpha = -0.1f; }},
+      {"atrous_iterations", [](auto& s) { s.atrous_iterations = -1; }},
+      {"atrous_iterations", [](auto& s) { s.atrous_iterations = 17; }},
+      {"sigma_z", [](auto& s) { s.sigma_z = 0.0f; }},
+      {"sigma_z", [](auto& s) { s.sigma_z = kInf; }},
+      {"sigma_z", [](auto& s) { s.sigma_z = kNan; }},
+      {"sigma_n", [](auto& s) { s.sigma_n = -1.0f; }},
+      {"sigma_n", [](auto& s) { s.sigma_n = kNan; }},
+      {"sigma_n", [](auto& s) { s.sigma_n = kInf; }},
+      {"sigma_l", [](auto& s) { s.sigma_l = -1.0f; }},
+      {"sigma_l", [](auto& s) { s.sigma_l = kNan; }},
+      {"sigma_l", [](auto& s) { s.sigma_l = kInf; }},
+      {"kernel", [](auto& s) { s.kernel = static_cast<AtrousKernel>(7); }},
+      {"gradient_iterations", [](auto& s) { s.gradient_iterations = 9; }},
+      {"gradient_iterations", [](auto& s) { s.gradient_iterations = -1; }},
+      {"history_cap", [](auto& s) { s.history_cap = kNan; }},
+      {"history_cap", [](auto& s) { s.history_cap = 0.5f; }},
+      {"history_cap", [](auto& s) { s.history_cap = kInf; }},
+      {"history_tap", [](auto& s) { s.history_tap = s.atrous_iterations; }},
+      {"history_tap", [](auto& s) { s.history_tap = -1; }},
+      {"history_tap", [](auto& s) { s.atrous_iterations = 0, s.history_tap = 1; }},
+      {"gradient_source", [](auto& s) { s.gradient_source = static_cast<GradientSource>(2); }},
+      {"min_history", [](auto& s) { s.min_history = kNan; }},
+      {"min_history", [](auto& s) { s.min_history = -1.0f; }},
+      {"exposure", [](auto& s) { s.exposure = kInf; }},
+      {"exposure", [](auto& s) { s.exposure = -1.0f; }},
+      {"tonemap", [](auto& s) { s.tonemap = static_cast<Tonemap>(5); }},
+      {"specular_atrous_iterations", [](auto& s) { s.specular_atrous_iterations = 17; }},
+  };
+  for (const auto& c : bad) {
+    DenoiseSettings s;
+    c.set(s);
+    CAPTURE(c.setting);
+    const auto problem = check_settings(s);
+    REQUIRE(problem.has_value());
+    CHECK(std::string(problem->setting.setting) == c.setting);
+    const std::string m = problem->message();
+    CHECK(m.find(c.setting) != std::string::npos);
+    CHECK(m.find(setting_range(c.setting)) != std::string::npos);
+    CHECK(m.find(problem->setting.option) != std::string::npos);
+  }
+}
+
+TEST_CASE("denoiser settings: every checked setting has a range, and every range names a DenoiseSettings member once") {
+  std::set<std::string> names;
+  for (const auto& r : setting_ranges()) {
+    CHECK(names.insert(r.setting).second);
+    CHECK(std::string(r.range).size() > 0);
+  }
+  // The members of DenoiseSettings but `adaptive` (set from the method, not by the user).
+  for (const char* member : {"alpha", "moments_alpha", "atrous_iterations", "sigma_z", "sigma_n", "sigma_l", "kernel",
+                             "gradient_iterations", "history_cap", "history_tap", "gradient_source", "min_history",
+                             "exposure", "tonemap", "specular_atrous_iterations"})
+    CHECK_MESSAGE(names.count(member) == 1, member << " has no range");
+}
