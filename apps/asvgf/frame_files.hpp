@@ -3,8 +3,9 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
+
+#include "render/atomic_file.hpp"
 
 namespace asvgf::cli {
 
@@ -15,11 +16,9 @@ inline std::string frame_file(const char* prefix, int frame, const char* ext) {
   return name;
 }
 
-// DIR/metrics.csv, written to a temporary name and renamed, so that it appears whole or not at all.
+// DIR/metrics.csv, whole or not at all (render/atomic_file.hpp).
 inline void write_metrics_csv(const std::filesystem::path& dir, const std::string& csv) {
-  const auto tmp = dir / "metrics.csv.partial";
-  std::ofstream(tmp) << csv;
-  std::filesystem::rename(tmp, dir / "metrics.csv");
+  render::write_file_atomic(dir / "metrics.csv", csv);
 }
 
 }  // namespace asvgf::cli

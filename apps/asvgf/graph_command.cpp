@@ -12,6 +12,7 @@
 #include "graph/graph_runtime.hpp"
 #include "hal/validate.hpp"
 #include "hal_record/record_device.hpp"
+#include "render/atomic_file.hpp"
 #include "render/scene_gpu.hpp"
 #include "scene/builtin.hpp"
 #include "scene_options.hpp"
@@ -68,12 +69,7 @@ int run_graph(const GraphOptions& o) {
       std::printf("scene %s, animation %s, method %s, %ux%u\n%s", o.scene.c_str(), o.animation.c_str(),
                   o.method.c_str(), settings.width, settings.height, compiled.text().c_str());
       if (!o.dot.empty()) {
-        std::ofstream out(o.dot);
-        out << compiled.dot();
-        if (!out) {
-          std::fprintf(stderr, "asvgf graph: error: cannot write '%s'\n", o.dot.c_str());
-          return 1;
-        }
+        render::write_file_atomic(o.dot, compiled.dot());
         std::printf("Graphviz written to %s\n", o.dot.c_str());
       }
       return 0;

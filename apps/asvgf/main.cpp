@@ -3,10 +3,12 @@
 #include <cstdio>
 #include <exception>
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 #include "commands.hpp"
 #include "hal/error.hpp"
+#include "render/atomic_file.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"asvgf: real-time A-SVGF denoising of path-traced frames on a thin HAL (Vulkan backend)", "asvgf"};
@@ -41,6 +43,12 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  try {
+    asvgf::render::check_file_fault_environment();
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "asvgf: error: %s\n", e.what());
+    return 2;
+  }
   for (auto& [sub, run] : commands) {
     if (!sub->parsed()) continue;
     try {

@@ -16,6 +16,7 @@
 
 #include "commands.hpp"
 #include "progress.hpp"
+#include "render/atomic_file.hpp"
 #include "render/metrics.hpp"
 #include "report/report.hpp"
 #include "report/summary.hpp"
@@ -184,16 +185,6 @@ CropRegion most_changed_region(const std::vector<float>& before, const std::vect
       if (c > best_change) best_change = c, best.x = x, best.y = y;
     }
   return best;
-}
-
-void write_atomic(const std::filesystem::path& path, const std::string& text) {
-  const auto tmp = std::filesystem::path(path).concat(".partial");
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    f << text;
-    if (!f) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  std::filesystem::rename(tmp, path);
 }
 
 std::string command_line(const ReportOptions& o, int frames) {
@@ -424,8 +415,8 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
   const report::Headline headline = report::compute_headline(d);
   std::filesystem::create_directories(dir);
   report::write_plots(d, headline, dir);
-  write_atomic(dir / "report.csv", report::report_csv(d));
-  write_atomic(dir / "report.md", report::report_markdown(d, headline));
+  render::write_file_atomic(dir / "report.csv", report::report_csv(d));
+  render::write_file_atomic(dir / "report.md", report::report_markdown(d, headline));
   if (!o.quiet) {
     std::fprintf(stderr, "%s\n", headline.text.c_str());
     std::fprintf(stderr, "report: %s (report.csv and PNG plots beside it), %.0f s\n",
@@ -482,8 +473,8 @@ int run_report(ReportOptions& o) {
     reports.push_back(report_scene(one, specs, *device, out / std::filesystem::path(name).stem()));
   }
   std::filesystem::create_directories(out);
-  write_atomic(out / "summary.csv", report::summary_csv(reports));
-  write_atomic(out / "summary.md", report::summary_markdown(reports));
+  render::write_file_atomic(out / "summary.csv", report::summary_csv(reports));
+  render::write_file_atomic(out / "summary.md", report::summary_markdown(reports));
   if (!o.quiet) std::fprintf(stderr, "summary: %s (summary.csv beside it)\n", (out / "summary.md").string().c_str());
   return 0;
 }

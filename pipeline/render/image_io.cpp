@@ -1,5 +1,7 @@
 #include "render/image_io.hpp"
 
+#include "render/atomic_file.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -19,38 +21,67 @@
 namespace asvgf::render {
 namespace {
 
-std::filesystem::path temporary_for(const std::filesystem::path& path) {
-  std::filesystem::path tmp = path;
-  tmp += ".partial";
-  return tmp;
-}
-
-void commit(const std::filesystem::path& tmp, const std::filesystem::path& path) {
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw ImageIoError(path.string() + ": cannot write: " + ec.message());
-  }
-}
-
 void check_size(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h, std::size_t values) {
   if (w == 0 || h == 0 || values != std::size_t(w) * h * 4)
     throw ImageIoError(path.string() + ": image of " + std::to_string(w) + "x" + std::to_string(h) + " has " +
                        std::to_string(values) + " values, expected 4 per pixel");
 }
 
+void append_bytes(void* context, void* data, int size) {
+  auto* out = static_cast<std::vector<std::byte>*>(context);
+  const auto* p = static_cast<const std::byte*>(data);
+  out->insert(out->end(), p, p + size);
+}
+
+// The EXR file's bytes: RGB as 32-bit floats in B, G, R channel order (what viewers expect), ZIP
+// compressed but for images under 16x16 (as tinyexr's SaveEXR).
+std::vector<std::byte> encode_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h,
+                                  std::span<const float> rgba) {
+  const std::size_t pixels = std::size_t(w) * h;
+  std::vector<float> planes[3];
+  for (int c = 0; c < 3; ++c) {
+    planes[c].resize(pixels);
+    for (std::size_t p = 0; p < pixels; ++p) planes[c][p] = rgba[4 * p + std::size_t(c)];
+  }
+  float* plane_pointers[3] = {planes[2].data(), planes[1].data(), planes[0].data()};  // B, G, R
+  EXRImage image;
+  InitEXRImage(&image);
+  image.num_channels = 3;
+  image.images = reinterpret_cast<unsigned char**>(plane_pointers);
+  image.width = static_cast<int>(w);
+  image.height = static_cast<int>(h);
+  EXRHeader header;
+  InitEXRHeader(&header);
+  header.compression_type = w < 16 && h < 16 ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_ZIP;
+  EXRChannelInfo channels[3] = {};
+  int pixel_types[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
+  for (int c = 0; c < 3; ++c) channels[c].name[0] = "BGR"[c];
+  header.num_channels = 3;
+  header.channels = channels;
+  header.pixel_types = pixel_types;
+  header.requested_pixel_types = pixel_types;
+  unsigned char* memory = nullptr;
+  const char* err = nullptr;
+  const std::size_t size = SaveEXRImageToMemory(&image, &header, &memory, &err);
+  if (size == 0) {
+    std::string message = err ? err : "unknown error";
+    if (err) FreeEXRErrorMessage(err);
+    throw ImageIoError(path.string() + ": cannot encode EXR: " + message);
+  }
+  std::vector<std::byte> bytes(reinterpret_cast<const std::byte*>(memory), reinterpret_cast<const std::byte*>(memory) + size);
+  std::free(memory);
+  return bytes;
+}
+
 }  // namespace
 
 void write_png(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h, std::span<const std::uint8_t> rgba) {
   check_size(path, w, h, rgba.size());
-  const auto tmp = temporary_for(path);
-  if (!stbi_write_png(tmp.c_str(), static_cast<int>(w), static_cast<int>(h), 4, rgba.data(), static_cast<int>(w * 4))) {
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    throw ImageIoError(path.string() + ": cannot write PNG (is the folder writable?)");
-  }
-  commit(tmp, path);
+  std::vector<std::byte> bytes;
+  if (!stbi_write_png_to_func(append_bytes, &bytes, static_cast<int>(w), static_cast<int>(h), 4, rgba.data(),
+                              static_cast<int>(w * 4)))
+    throw ImageIoError(path.string() + ": cannot encode PNG");
+  write_file_atomic(path, bytes);
 }
 
 void write_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h, std::span<const float> rgba) {
@@ -61,19 +92,7 @@ void write_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t
       throw ImageIoError(path.string() + ": refusing to write a non-finite value at pixel (" +
                          std::to_string(pixel % w) + ", " + std::to_string(pixel / w) + ")");
     }
-  std::vector<float> rgb(std::size_t(w) * h * 3);
-  for (std::size_t p = 0; p < std::size_t(w) * h; ++p)
-    for (int c = 0; c < 3; ++c) rgb[3 * p + c] = rgba[4 * p + c];
-  const auto tmp = temporary_for(path);
-  const char* err = nullptr;
-  if (SaveEXR(rgb.data(), static_cast<int>(w), static_cast<int>(h), 3, /*save_as_fp16=*/0, tmp.c_str(), &err) != 0) {
-    std::string message = err ? err : "unknown error";
-    if (err) FreeEXRErrorMessage(err);
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    throw ImageIoError(path.string() + ": cannot write EXR: " + message);
-  }
-  commit(tmp, path);
+  write_file_atomic(path, encode_exr(path, w, h, rgba));
 }
 
 ExrImage read_exr(const std::filesystem::path& path) {

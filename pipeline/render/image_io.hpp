@@ -1,5 +1,6 @@
-// render/image_io.hpp: writing frames: PNG (8-bit sRGB) and OpenEXR (linear float). Files appear
-// whole or not at all: each is written to a temporary name and renamed.
+// render/image_io.hpp: writing frames: PNG (8-bit sRGB) and OpenEXR (linear float), encoded in
+// memory and written by write_file_atomic (render/atomic_file.hpp): whole or not at all, every
+// failure a FileWriteError naming the file and the cause.
 #pragma once
 
 #include <cstdint>

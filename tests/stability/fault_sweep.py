@@ -8,6 +8,11 @@ decode with valid CRCs, EXRs start with the OpenEXR magic number, no `.partial` 
 left behind).
 
   fault_sweep.py OUT_DIR -- COMMAND...   COMMAND writes into OUT_DIR (cleared before each run)
+  fault_sweep.py --files OUT_DIR -- COMMAND...
+      the same over file output (ASVGF_FILE_FAULT: the n-th write, flush, sync, close or rename of
+      the process fails, render/atomic_file.hpp): every run must exit 1 naming the file and the
+      cause, with no half-written file and no temporary file left behind (a failed output is never
+      an exit 0).
 
 Prints one line per kind and a total; exits 1 on the first failing run, naming it.
 """
@@ -55,17 +60,53 @@ def files(out_dir):
                   for root, _, names in os.walk(out_dir) for name in names)
 
 
-def run(command, out_dir, fault):
+def run(command, out_dir, fault, variable="ASVGF_FAULT"):
     shutil.rmtree(out_dir, ignore_errors=True)
-    env = dict(os.environ, ASVGF_FAULT=fault)
+    env = dict(os.environ)
+    env[variable] = fault
     return subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
 
 
+def sweep_files(out_dir, command):
+    counted = run(command, out_dir, "count", "ASVGF_FILE_FAULT")
+    if counted.returncode != 0:
+        fail("the unfaulted run exits %d: %s" % (counted.returncode, counted.stderr.strip()[-400:]))
+    match = re.search(r"file fault counts: (.*)", counted.stderr)
+    if not match:
+        fail("the unfaulted run printed no file fault counts")
+    counts = [(op, int(n)) for op, n in (item.split(" ") for item in match.group(1).split(", "))]
+    if sum(n for _, n in counts) == 0:
+        fail("the unfaulted run wrote no file")
+    total = 0
+    for op, n in counts:
+        for k in range(1, n + 1):
+            fault = "%s:%d" % (op, k)
+            r = run(command, out_dir, fault, "ASVGF_FILE_FAULT")
+            where = "ASVGF_FILE_FAULT=%s %s" % (fault, " ".join(command))
+            problem = check_outputs(out_dir)
+            if problem:
+                fail("%s: %s" % (where, problem))
+            if r.returncode != 1:
+                fail("%s exits %d (want 1): %s" % (where, r.returncode, (r.stderr or r.stdout).strip()[-600:]))
+            if not re.search(r"/[^ ]+: cannot write \(%s\): \S" % op, r.stderr):
+                fail("%s: no message names the file and the cause: %s" % (where, r.stderr.strip()[-600:]))
+            total += 1
+        print("fault_sweep: file %s: %d calls, each failing cleanly" % (op, n))
+    print("fault_sweep: ok: %d faulted runs of %s" % (total, os.path.basename(command[0])))
+
+
 def main():
-    if len(sys.argv) < 4 or sys.argv[2] != "--":
+    args = sys.argv[1:]
+    files_mode = bool(args) and args[0] == "--files"
+    if files_mode:
+        args = args[1:]
+    if len(args) < 3 or args[1] != "--":
         print(__doc__)
         sys.exit(2)
-    out_dir, command = sys.argv[1], sys.argv[3:]
+    out_dir, command = args[0], args[2:]
+    if files_mode:
+        sweep_files(out_dir, command)
+        return
     counted = run(command, out_dir, "count")
     if counted.returncode != 0:
         fail("the unfaulted run exits %d: %s" % (counted.returncode, counted.stderr.strip()[-400:]))
