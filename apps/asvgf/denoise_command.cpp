@@ -82,7 +82,7 @@ int run_denoise(DenoiseOptions& o) {
       depth("--depth", o.depth), motion("--motion", o.motion);
   const FramePattern gradient = o.gradient.empty() ? FramePattern() : FramePattern("--gradient", o.gradient);
   const FramePattern reference = o.reference.empty() ? FramePattern() : FramePattern("--reference", o.reference);
-  const int available = count_frames(color, o.first);
+  const int available = count_frames(color, o.first, o.frames);
   if (available == 0)
     throw render::ImageIoError(color.path(o.first).string() + " (color, frame " + std::to_string(o.first) +
                                "): missing; nothing to denoise");
@@ -135,7 +135,20 @@ int run_denoise(DenoiseOptions& o) {
   const hal::ImageHandle display = create("display", w, h, hal::Format::RGBA8Unorm);
 
   const std::filesystem::path dir(o.out);
+  // Before anything is written: no output may replace an input of this run (the references
+  // included, which are read after the frame they measure is written).
+  std::vector<std::pair<std::string, std::filesystem::path>> input_files, output_files;
+  for (int i = 0; i < frames; ++i) {
+    const int f = o.first + i;
+    for (const FramePattern* p : {&color, &albedo, &normal, &depth, &motion, &gradient, &reference})
+      if (!p->empty()) input_files.emplace_back(p->option(), p->path(f));
+    output_files.emplace_back("--out", dir / frame_file("frame", f, "exr"));
+    output_files.emplace_back("--out", dir / frame_file("frame", f, "png"));
+  }
+  if (!reference.empty()) output_files.emplace_back("--out", dir / "metrics.csv");
+  refuse_overwriting_inputs(input_files, output_files);
   std::filesystem::create_directories(dir);
+  report_stale_partials("denoise", dir);
   if (!o.quiet)
     std::fprintf(stderr, "asvgf denoise: %d frames of %ux%u from %s, %s%s on %s\n", frames, w, h, o.color.c_str(),
                  o.method.c_str(),

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "render/atomic_file.hpp"
 
@@ -20,5 +22,13 @@ inline std::string frame_file(const char* prefix, int frame, const char* ext) {
 inline void write_metrics_csv(const std::filesystem::path& dir, const std::string& csv) {
   render::write_file_atomic(dir / "metrics.csv", csv);
 }
+
+// Throws CLI::ValidationError naming both files when an output would replace an input: compared as
+// files (device and inode), so links and ".." are seen through. Pairs are (option, path).
+void refuse_overwriting_inputs(const std::vector<std::pair<std::string, std::filesystem::path>>& inputs,
+                               const std::vector<std::pair<std::string, std::filesystem::path>>& outputs);
+
+// Removes the temporary files that killed runs left in `folder` and says so on stderr.
+void report_stale_partials(const char* command, const std::filesystem::path& folder);
 
 }  // namespace asvgf::cli

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace asvgf::cli {
 
@@ -35,9 +36,53 @@ std::filesystem::path FramePattern::path(int frame) const {
   return std::filesystem::path(buffer.data());
 }
 
-int count_frames(const FramePattern& pattern, int first) {
+std::optional<int> FramePattern::frame_of(const std::filesystem::path& file) const {
+  // The literal text around the one conversion (%% unescaped), then digits between them.
+  const std::size_t at = [&] {
+    for (std::size_t i = 0; i < pattern_.size(); ++i)
+      if (pattern_[i] == '%') {
+        if (pattern_[i + 1] == '%') ++i;
+        else return i;
+      }
+    return pattern_.size();
+  }();
+  const std::size_t end = pattern_.find('d', at);
+  auto literal = [](std::string text) {
+    for (std::size_t i = text.find("%%"); i != std::string::npos; i = text.find("%%", i + 1)) text.erase(i, 1);
+    return text;
+  };
+  const std::string prefix = std::filesystem::path(literal(pattern_.substr(0, at))).filename().string();
+  const std::string suffix = literal(pattern_.substr(end + 1));
+  const std::string name = file.filename().string();
+  if (suffix.find('/') != std::string::npos || name.size() <= prefix.size() + suffix.size()) return std::nullopt;
+  if (name.compare(0, prefix.size(), prefix) != 0 ||
+      name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return std::nullopt;
+  const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+  if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+  const int frame = std::stoi(digits);
+  if (path(frame).filename() != file.filename()) return std::nullopt;  // another width, e.g. 7 for %04d
+  return frame;
+}
+
+int count_frames(const FramePattern& pattern, int first, int wanted) {
   int n = 0;
   while (std::filesystem::exists(pattern.path(first + n))) ++n;
+  if (n == 0 || (wanted > 0 && n >= wanted)) return n;
+  // A missing frame ends the sequence only when no later frame exists: otherwise it is a gap.
+  const int missing = first + n;
+  const std::filesystem::path folder = pattern.path(missing).parent_path();
+  std::error_code ec;
+  std::optional<int> later;
+  for (const auto& entry : std::filesystem::directory_iterator(folder.empty() ? "." : folder, ec)) {
+    const auto frame = pattern.frame_of(entry.path());
+    if (frame && *frame > missing && (!later || *frame < *later)) later = frame;
+  }
+  if (later)
+    throw render::ImageIoError(pattern.path(missing).string() + " (" + pattern.option() + ", frame " +
+                               std::to_string(missing) + "): missing, but frame " + std::to_string(*later) +
+                               " exists: a gap in the sequence (--frames " + std::to_string(n) +
+                               " denoises the frames before it)");
   return n;
 }
 

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@ class FramePattern {
   FramePattern() = default;
   FramePattern(std::string option, std::string pattern);
   std::filesystem::path path(int frame) const;
+  // The frame number of a file this pattern names (same folder assumed), or nothing.
+  std::optional<int> frame_of(const std::filesystem::path& file) const;
   bool empty() const { return pattern_.empty(); }
   const std::string& option() const { return option_; }
 
@@ -38,7 +41,9 @@ struct BufferSpec {
 // with its pixel.
 render::ExrImage read_frame(const FramePattern& pattern, int frame, const BufferSpec& spec);
 
-// Frames first, first+1, ... while `pattern` has a file; 0 when the first is missing.
-int count_frames(const FramePattern& pattern, int first);
+// Frames first, first+1, ... while `pattern` has a file; 0 when the first is missing. Throws
+// render::ImageIoError naming the first missing file when a later frame exists (a gap), unless
+// `wanted` (> 0) frames are there before it.
+int count_frames(const FramePattern& pattern, int first, int wanted = 0);
 
 }  // namespace asvgf::cli

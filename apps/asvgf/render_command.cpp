@@ -67,6 +67,7 @@ int run_render(RenderOptions& o) {
 
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
+  report_stale_partials("render", dir);
   if (!o.quiet)
     std::fprintf(stderr, "asvgf render: %s, %s, %ux%u, %d frames, %u spp%s on %s (%s)\n", scene.name.c_str(),
                  o.scene.method.c_str(), settings.width, settings.height, frames, renderer.spp_per_frame(),

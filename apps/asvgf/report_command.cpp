@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "frame_files.hpp"
 #include "progress.hpp"
 #include "render/atomic_file.hpp"
 #include "render/metrics.hpp"
@@ -414,6 +415,7 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
   d.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const report::Headline headline = report::compute_headline(d);
   std::filesystem::create_directories(dir);
+  report_stale_partials("report", dir);
   report::write_plots(d, headline, dir);
   render::write_file_atomic(dir / "report.csv", report::report_csv(d));
   render::write_file_atomic(dir / "report.md", report::report_markdown(d, headline));
