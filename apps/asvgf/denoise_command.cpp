@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "frame_files.hpp"
 #include "frame_sequence.hpp"
+#include "input_conventions.hpp"
 #include "motion_check.hpp"
 #include "progress.hpp"
 #include "render/image_io.hpp"
@@ -32,12 +33,21 @@ struct DenoiseOptions {
   int frames = 0;  // 0: as many as --color has from --first-frame on
   std::string out = "denoised";
   bool quiet = false;
+  InputConventionOptions conventions;
+  const CLI::Option* gradient_source_option = nullptr;  // to tell an explicit --gradient-source from the default
 };
 
 // --input DIR fills every pattern not given explicitly with DIR/<buffer>_%04d.exr (the gradient
 // only for asvgf, and only when DIR has one for the first frame) and reads the depth gradient.
+// With --from cycles, --input is the multilayer files' pattern and fills every buffer's.
 void apply_input_folder(DenoiseOptions& o) {
   if (o.input.empty()) return;
+  if (o.conventions.from == "cycles") {
+    // --input is the pattern of Blender's multilayer files: one file a frame holds every buffer.
+    for (std::string* pattern : {&o.color, &o.albedo, &o.normal, &o.depth, &o.motion})
+      if (pattern->empty()) *pattern = o.input;
+    return;
+  }
   const std::filesystem::path dir(o.input);
   if (!std::filesystem::is_directory(dir))
     throw CLI::ValidationError("--input", "'" + o.input + "' is not a folder (one written by asvgf render --aovs)");
@@ -82,6 +92,22 @@ int run_denoise(DenoiseOptions& o) {
       depth("--depth", o.depth), motion("--motion", o.motion);
   const FramePattern gradient = o.gradient.empty() ? FramePattern() : FramePattern("--gradient", o.gradient);
   const FramePattern reference = o.reference.empty() ? FramePattern() : FramePattern("--reference", o.reference);
+  // asvgf needs a temporal gradient: without re-shaded samples it estimates one from reprojected
+  // luminance, and says so; --gradient-source reshaded without samples is refused (constant alpha
+  // is --method svgf).
+  std::string gradient_note;
+  if (o.method == "asvgf" && gradient.empty() && o.device.gradient_source == "reshaded") {
+    if (o.gradient_source_option && o.gradient_source_option->count() > 0)
+      throw CLI::ValidationError("--gradient-source", "reshaded needs gradient samples (--gradient, or gradient_NNNN.exr "
+                                                      "in --input); reprojected needs none; --method svgf is constant "
+                                                      "alpha");
+    o.device.gradient_source = "reprojected";
+    o.device.denoise.gradient_source = GradientSource::Reprojected;
+    gradient_note = "reprojected (no gradient samples given)";
+  } else if (o.method == "asvgf") {
+    gradient_note = o.device.gradient_source == "reprojected" ? "reprojected" : "reshaded samples";
+  }
+
   const int available = count_frames(color, o.first, o.frames);
   if (available == 0)
     throw render::ImageIoError(color.path(o.first).string() + " (color, frame " + std::to_string(o.first) +
@@ -92,7 +118,17 @@ int run_denoise(DenoiseOptions& o) {
                                std::to_string(o.first + available) + "): missing; --frames asks for " +
                                std::to_string(frames));
 
-  const render::ExrImage first = read_frame(color, o.first, {"color", 0, 0, {"R", "G", "B"}});
+  const bool own_folder = !o.input.empty() && o.conventions.from.empty();
+  const std::string cycles_layer = o.conventions.from == "cycles"
+                                       ? cycles_layer_of(render::read_exr_channel_names(color.path(o.first)))
+                                       : std::string();
+  const InputConventions conventions = resolve_input_conventions(o.conventions, own_folder, cycles_layer);
+  auto channels_of = [&](const char* buffer) {
+    const auto it = conventions.channels.find(buffer);
+    return it == conventions.channels.end() ? std::vector<std::string>{} : it->second;
+  };
+  const render::ExrImage first =
+      read_frame(color, o.first, {"color", 0, 0, {"R", "G", "B"}, false, channels_of("color")});
   const std::uint32_t w = first.width, h = first.height, gw = (w + 2) / 3, gh = (h + 2) / 3;
   auto device = open_device(o.device);
   asvgf::DenoiserConfig config;
@@ -103,6 +139,8 @@ int run_denoise(DenoiseOptions& o) {
                                        : DenoiseMethod::Asvgf;
   config.settings = o.device.denoise;
   config.depth_gradient_given = o.depth_gradient;
+  config.color_input = conventions.color;
+  config.motion = conventions.motion;
   config.validate = o.validate;
   asvgf::Denoiser denoiser(*device, config);
 
@@ -120,14 +158,14 @@ int run_denoise(DenoiseOptions& o) {
   // Specs first, images one by one: with the creations inside the braced list, a creation that
   // threw crashed the unwinding (GCC 12 freed a string of the list twice; found by the fault sweep).
   std::vector<Input> inputs = {
-      {&color, {"color", w, h, {"R", "G", "B"}}, {}},
-      {&albedo, {"albedo", w, h, {"R", "G", "B"}}, {}},
-      {&normal, {"normal", w, h, {"R", "G", "B"}}, {}},
+      {&color, {"color", w, h, {"R", "G", "B"}, false, channels_of("color")}, {}},
+      {&albedo, {"albedo", w, h, {"R", "G", "B"}, false, channels_of("albedo")}, {}},
+      {&normal, {"normal", w, h, {"R", "G", "B"}, false, channels_of("normal")}, {}},
       {&depth,
        {"depth", w, h, o.depth_gradient ? std::vector<std::string>{"R", "G"} : std::vector<std::string>{"R"},
-        /*infinity_allowed=*/true},
+        /*infinity_allowed=*/true, channels_of("depth")},
        {}},
-      {&motion, {"motion", w, h, {"R", "G"}}, {}},
+      {&motion, {"motion", w, h, {"R", "G"}, false, channels_of("motion")}, {}},
   };
   for (auto& in : inputs) in.image = create(in.spec.name.c_str(), w, h, F32);
   const hal::ImageHandle gradient_image = gradient.empty() ? hal::ImageHandle{} : create("gradient", gw, gh, F32);
@@ -150,16 +188,14 @@ int run_denoise(DenoiseOptions& o) {
   std::filesystem::create_directories(dir);
   report_stale_partials("denoise", dir);
   if (!o.quiet)
-    std::fprintf(stderr, "asvgf denoise: %d frames of %ux%u from %s, %s%s on %s\n", frames, w, h, o.color.c_str(),
-                 o.method.c_str(),
-                 o.method != "asvgf"                         ? ""
-                 : o.device.gradient_source == "reprojected" ? " with the gradient from reprojected luminance"
-                 : gradient.empty()                          ? " without gradient samples (constant alpha)"
-                                                             : " with gradient samples",
-                 device->adapter().name.c_str());
+    std::fprintf(stderr, "asvgf denoise: %d frames of %ux%u from %s (%s), %s%s%s on %s\n", frames, w, h,
+                 o.color.c_str(), conventions.describe().c_str(), o.method.c_str(),
+                 gradient_note.empty() ? "" : ", gradient: ", gradient_note.c_str(), device->adapter().name.c_str());
+  else if (gradient_note.find("no gradient samples") != std::string::npos)
+    std::fprintf(stderr, "asvgf denoise: asvgf's gradient: %s\n", gradient_note.c_str());  // a choice made for you
 
   std::ostringstream csv;
-  csv << "frame,method,relmse,ssim,gpu_ms\n";
+  csv << "frame,method,relmse,ssim,gpu_ms,gradient\n";
   Progress progress("denoising", frames, o.quiet);
   std::vector<float> hdr(std::size_t(w) * h * 4);
   std::vector<std::uint8_t> ldr(std::size_t(w) * h * 4);
@@ -173,7 +209,11 @@ int run_denoise(DenoiseOptions& o) {
     }
     render::ExrImage& depth_now = images[3];
     if (i > 0 && o.motion_check) {
-      const MotionCheck check = check_motion(previous_depth, depth_now.rgba, images[4].rgba, w, h);
+      // Judged in the denoiser's convention, as the GPU converts them (asvgf::motion_scale).
+      const auto scale = motion_scale(conventions.motion, w, h);
+      std::vector<float> pixels = images[4].rgba;
+      for (std::size_t k = 0; k < pixels.size(); k += 4) pixels[k] *= scale[0], pixels[k + 1] *= scale[1];
+      const MotionCheck check = check_motion(previous_depth, depth_now.rgba, pixels, w, h, conventions.motion);
       if (check.problem)
         throw render::ImageIoError(motion.path(f).string() + " (motion, frame " + std::to_string(f) +
                                    "): " + *check.problem + " (--no-motion-check skips this test)");
@@ -213,10 +253,11 @@ int run_denoise(DenoiseOptions& o) {
     }
     std::string note;
     if (!reference.empty()) {
-      const render::ExrImage ref = read_frame(reference, f, {"reference", w, h, {"R", "G", "B"}});
+      const render::ExrImage ref =
+          read_frame(reference, f, {"reference", w, h, {"R", "G", "B"}, false, channels_of("reference")});
       const double relmse = render::relative_mse(hdr, ref.rgba);
       csv << f << "," << o.method << "," << std::to_string(relmse) << ","
-          << std::to_string(render::ssim(hdr, ref.rgba, w, h)) << "," << (timed ? std::to_string(gpu_ms) : "") << "\n";
+          << std::to_string(render::ssim(hdr, ref.rgba, w, h)) << "," << (timed ? std::to_string(gpu_ms) : "") << "," << gradient_note << "\n";
       note = "relMSE " + std::to_string(relmse);
     }
     progress.step(i + 1, note);
@@ -246,15 +287,17 @@ std::function<int()> add_denoise_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "denoise",
       "Denoise a frame sequence from per-buffer EXR files (e.g. from asvgf render --aovs); write EXR and PNG");
-  cmd->add_option(
-      "--input", o->input,
-      "Folder written by asvgf render --aovs: reads its {color,albedo,normal,depth,motion,gradient}_NNNN.exr");
-  cmd->add_option("--color", o->color, "Noisy radiance divided by albedo (demodulated), e.g. frames/color_%04d.exr");
-  cmd->add_option("--albedo", o->albedo, "Albedo the output is multiplied by (RGB)");
+  cmd->add_option("--input", o->input,
+                  "Folder written by asvgf render --aovs (reads its {color,albedo,normal,depth,motion,gradient}_NNNN.exr, "
+                  "colour demodulated); with --from cycles the pattern of Blender's multilayer files");
+  cmd->add_option("--color", o->color, "Noisy radiance (RGB; --demodulated: divided by the albedo), e.g. frames/color_%04d.exr");
+  cmd->add_option("--albedo", o->albedo, "Albedo (RGB): the denoiser divides the radiance by it and multiplies back");
   cmd->add_option("--normal", o->normal, "World-space normals (RGB = xyz; 0 = background)");
   cmd->add_option("--depth", o->depth,
                   "Linear view depth in R (0 = background); G = its gradient with --depth-gradient");
-  cmd->add_option("--motion", o->motion, "Motion in pixels, previous minus current position (RG)");
+  cmd->add_option("--motion", o->motion,
+                  "Motion vectors (RG): previous minus current position in pixels, y down (other conventions: "
+                  "--motion-convention and --motion-sign/-units/-y)");
   cmd->add_option("--gradient", o->gradient,
                   "A-SVGF gradient samples, ceil(w/3) x ceil(h/3): R = last frame's luminance, G = pixel 0..8 in the "
                   "3x3 stratum or -1 (include/asvgf/denoiser.hpp)");
@@ -276,8 +319,10 @@ std::function<int()> add_denoise_command(CLI::App& app) {
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--out", o->out, "Output folder")->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");
+  add_input_convention_options(*cmd, o->conventions);
   add_device_options(*cmd, o->device);
   add_denoise_options(*cmd, o->device);
+  o->gradient_source_option = cmd->get_option("--gradient-source");
   return [o] { return run_denoise(*o); };
 }
 

@@ -90,7 +90,7 @@ render::ExrImage read_frame(const FramePattern& pattern, int frame, const Buffer
   const std::filesystem::path path = pattern.path(frame);
   const std::string what = path.string() + " (" + spec.name + ", frame " + std::to_string(frame) + ")";
   if (!std::filesystem::exists(path)) throw render::ImageIoError(what + ": missing");
-  render::ExrImage image = render::read_exr(path);
+  render::ExrImage image = render::read_exr(path, spec.file_channels);
   if (spec.width && (image.width != spec.width || image.height != spec.height))
     throw render::ImageIoError(what + ": " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                                ", expected " + std::to_string(spec.width) + "x" + std::to_string(spec.height));

@@ -35,6 +35,9 @@ struct BufferSpec {
   std::uint32_t width = 0, height = 0;  // 0: any (the first color frame sets the size)
   std::vector<std::string> channels;    // e.g. {"R", "G"}
   bool infinity_allowed = false;        // +-Inf is a legal value (depth: background)
+  // The file's channels read into R, G, B, A in order (e.g. a multilayer file's
+  // "ViewLayer.Normal.X"); empty: R, G, B, A by name.
+  std::vector<std::string> file_channels = {};
 };
 // Reads frame `frame` of `pattern` and checks it against `spec`. Throws render::ImageIoError naming
 // the file: missing, unreadable, another size, a missing channel, a NaN or (unless allowed) an Inf,

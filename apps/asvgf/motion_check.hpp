@@ -10,10 +10,12 @@
 #include <span>
 #include <string>
 
+#include "asvgf/denoiser.hpp"
+
 namespace asvgf::cli {
 
 struct MotionFit {
-  std::string convention;  // "as given", "negated", "in UV units", "negated, in UV units"
+  std::string convention;  // "as given", "negated", "y-flipped", "x-flipped", "in UV units", ...
   double consistent = 0;   // fraction of the moving pixels whose reprojected depth matches
 };
 struct MotionCheck {
@@ -23,9 +25,12 @@ struct MotionCheck {
   std::optional<std::string> problem;
 };
 
-// depth, previous_depth: RGBA floats with linear depth in R (0 = background); motion: RGBA floats
-// with the vector in RG. Too few moving pixels (under 32) give no verdict.
+// depth, previous_depth: RGBA floats with linear depth in R (background: asvgf::is_background_depth);
+// motion: RGBA floats with the vector in RG, already converted from `given` to the denoiser's
+// convention; a problem names the setting that reads them right. Too few moving pixels (under
+// 32) give no verdict.
 MotionCheck check_motion(std::span<const float> previous_depth, std::span<const float> depth,
-                         std::span<const float> motion, std::uint32_t width, std::uint32_t height);
+                         std::span<const float> motion, std::uint32_t width, std::uint32_t height,
+                         const MotionConvention& given = {});
 
 }  // namespace asvgf::cli

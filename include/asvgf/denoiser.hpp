@@ -10,20 +10,27 @@
 // texelFetch, so any float format with enough channels works (RGBA32F, RGBA16F, RG16F, R32F, ...);
 // integer and 8-bit formats are refused. Pixel (0,0) is the top-left; sizes are the denoiser's.
 //
-//   illumination  rgb   linear radiance of this frame divided by its albedo: radiance / max(albedo,
-//                       1e-3) per channel (demodulated). Not demodulating: pass albedo = 1 and the
-//                       radiance, and the filters blur texture detail. NaN/Inf samples are dropped
-//                       before the histories and counted (sanitised()); values are clamped to
-//                       [0, 65504].
-//   albedo        rgb   what the output is multiplied by (the demodulation albedo).
+//   color         rgb   this frame's noisy linear radiance (DenoiserConfig::color_input Radiance,
+//                       the default): the denoiser divides it by the albedo itself, per channel where
+//                       the albedo is at least 1e-3 (elsewhere the radiance passes through), filters
+//                       and multiplies back. With ColorInput::Demodulated: radiance already divided by
+//                       the albedo. NaN/Inf samples are dropped before the histories and counted
+//                       (sanitised()); values are clamped to [0, 65504].
+//   albedo        rgb   the surface's albedo (for emitters, whatever the renderer divides by: Cycles'
+//                       Denoising Albedo holds their emission, which is then filtered as 1 and
+//                       multiplied back). Albedo 1 everywhere: no demodulation, and the filters blur
+//                       texture detail.
 //   normal        xyz   world-space surface normal at the primary hit, any length (0 = background).
 //   depth         x     linear view depth (distance along the camera's forward axis, any unit),
-//                       > 0; 0, negative or not finite = background (sky, miss).
+//                       > 0. Background (sky, miss): 0, negative, not finite or >= kBackgroundDepth
+//                       (1e9: Cycles writes 1e10), or a zero normal; is_background() decides.
 //                 y     optional: max(|dz/dx|, |dz/dy|) in depth units per pixel
 //                       (DenoiserConfig::depth_gradient_given); else estimated from the neighbours.
 //   motion        xy    where this pixel's surface point was in the previous frame, minus where it is
-//                       now, in pixels (previous - current; x right, y down). A point that was not on
-//                       screen: any value that lands outside the image (e.g. -1e6).
+//                       now, in pixels (previous - current; x right, y down): MotionConvention::ours().
+//                       Other conventions (sign, UV or NDC units, y up) are converted when
+//                       DenoiserConfig::motion says so (presets: cycles(), nrd()). A point that was not
+//                       on screen: any value that lands outside the image (e.g. -1e6).
 //   gradient_samples    A-SVGF only, ceil(w/3) x ceil(h/3): per 3x3 stratum, x = the luminance of
 //                       the previous frame's illumination at the sample, y = the sample's pixel in
 //                       the stratum (0..8, row-major: pixel 3*s + (i%3, i/3)), -1 = no sample. The
@@ -41,6 +48,8 @@
 // Inputs are left in hal::State::ShaderRead, outputs in DenoiserOutputs::final_state.
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -52,6 +61,17 @@
 #include "hal/device.hpp"
 
 namespace asvgf {
+
+// The one definition of background (no surface at the pixel), used by the denoiser's passes
+// (shaders/common/surface.glsl), its input validation and the command line's checks.
+inline constexpr double kBackgroundDepth = 1e9;
+inline bool is_background_depth(double depth) {
+  return !std::isfinite(depth) || depth <= 0 || depth >= kBackgroundDepth;
+}
+inline bool is_background(double depth, const std::array<double, 3>& normal) {
+  const double l1 = std::abs(normal[0]) + std::abs(normal[1]) + std::abs(normal[2]);
+  return is_background_depth(depth) || !std::isfinite(l1) || !(l1 >= 1e-30);
+}
 
 // Ema: temporal accumulation only; Svgf: + variance-guided a-trous filter (Schied et al. 2017);
 // Asvgf: + the temporal gradient's adaptive blend factor (Schied, Peters, Dachsbacher 2018).
@@ -65,7 +85,7 @@ struct DenoiserImage {
 };
 
 struct DenoiserInputs {
-  DenoiserImage illumination, albedo, normal, depth, motion;
+  DenoiserImage illumination, albedo, normal, depth, motion;  // illumination: the `color` above
   std::optional<DenoiserImage> gradient_samples;  // A-SVGF; see the table above
   bool camera_cut = false;                        // true: forget every history before this frame
 };
@@ -76,11 +96,45 @@ struct DenoiserOutputs {
   hal::State final_state = hal::State::ShaderRead;
 };
 
+// What DenoiserInputs::illumination holds.
+enum class ColorInput {
+  Radiance,     // the renderer's radiance: the denoiser demodulates by the albedo and re-modulates
+  Demodulated,  // radiance already divided by the albedo (asvgf render --aovs writes this)
+};
+
+// How a renderer's motion vectors are written; the denoiser converts them to ours().
+enum class MotionUnits {
+  Pixels,  // one unit = one pixel
+  Uv,      // one unit = the image's width (x) or height (y)
+  Ndc,     // one unit = half the image's width or height (NDC spans [-1, 1])
+};
+struct MotionConvention {
+  bool previous_minus_current = true;  // false: current minus previous (the vector points forward)
+  MotionUnits units = MotionUnits::Pixels;
+  bool y_up = false;  // true: +y points up the image
+  static constexpr MotionConvention ours() { return {}; }
+  // Blender Cycles' Vector pass, X and Y: previous minus current, in pixels, y up.
+  static constexpr MotionConvention cycles() { return {true, MotionUnits::Pixels, true}; }
+  // NVIDIA NRD's screen-space motion (IN_MV): previous minus current UV, y down.
+  static constexpr MotionConvention nrd() { return {true, MotionUnits::Uv, false}; }
+  bool operator==(const MotionConvention&) const = default;
+};
+// What the denoiser multiplies a vector in convention `c` by, per axis, to get ours() (pixels,
+// previous minus current, y down) on a width x height image; the GPU applies the same factors.
+inline std::array<float, 2> motion_scale(const MotionConvention& c, std::uint32_t width, std::uint32_t height) {
+  const float unit_x = c.units == MotionUnits::Pixels ? 1.0f : c.units == MotionUnits::Uv ? float(width) : 0.5f * float(width);
+  const float unit_y = c.units == MotionUnits::Pixels ? 1.0f : c.units == MotionUnits::Uv ? float(height) : 0.5f * float(height);
+  const float sign = c.previous_minus_current ? 1.0f : -1.0f;
+  return {sign * unit_x, sign * (c.y_up ? -unit_y : unit_y)};
+}
+
 struct DenoiserConfig {
   std::uint32_t width = 0, height = 0;
   DenoiseMethod method = DenoiseMethod::Asvgf;
   DenoiseSettings settings;           // `adaptive` is set from the method
   bool depth_gradient_given = false;  // depth.y holds the depth gradient
+  ColorInput color_input = ColorInput::Radiance;
+  MotionConvention motion;
   // Check every frame's inputs on the GPU against the conventions above (one extra pass that
   // counts with atomics); input_report() says what is wrong, in words.
   bool validate = false;
@@ -88,7 +142,7 @@ struct DenoiserConfig {
 
 // What DenoiserConfig::validate found in the last frame's inputs (counts of pixels).
 struct InputReport {
-  std::uint32_t pixels = 0, surface_pixels = 0;  // surface: depth finite and > 0
+  std::uint32_t pixels = 0, surface_pixels = 0;  // surface: not background (is_background), a non-finite normal aside
   std::uint32_t illumination_not_finite = 0, illumination_negative = 0, illumination_above_fp16 = 0;
   std::uint32_t albedo_invalid = 0;                          // NaN, Inf or negative
   std::uint32_t normal_not_unit = 0, normal_not_finite = 0;  // on surface pixels; unit: length within 0.1 of 1

@@ -11,6 +11,7 @@
 #include "api/input_report.hpp"
 #include "graph/graph_runtime.hpp"
 #include "hal/error.hpp"
+#include "passes/convert_inputs.hpp"
 #include "passes/denoiser.hpp"
 #include "passes/pack_surface.hpp"
 #include "passes/temporal.hpp"
@@ -146,11 +147,11 @@ void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, cons
     return g.import(name, image.image, image.state, iw, ih, image.format);
   };
   const std::uint32_t gw = (w + 2) / 3, gh = (h + 2) / 3;
-  const ResourceId illumination = import("illumination", in.illumination, w, h);
-  const ResourceId albedo = import("albedo", in.albedo, w, h);
+  const ResourceId color = import("illumination", in.illumination, w, h);
+  const ResourceId albedo_in = import("albedo", in.albedo, w, h);
   const ResourceId normal = import("normal", in.normal, w, h);
   const ResourceId depth = import("depth", in.depth, w, h);
-  const ResourceId motion = import("motion", in.motion, w, h);
+  const ResourceId motion_in = import("motion", in.motion, w, h);
   const ResourceId radiance = import("radiance", out.radiance, w, h);
   const ResourceId display =
       out.display ? import("display", *out.display, w, h) : g.add_image("display", w, h, F::RGBA8Unorm);
@@ -158,11 +159,26 @@ void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, cons
   const ResourceId depth_normal = g.add_image("depth_normal", w, h, F::RGBA32F, graph::Lifetime::Persistent);
   passes::add_pack_surface(g, impl_->pipelines, {depth, normal, depth_normal}, impl_->config.depth_gradient_given);
 
+  // The caller's conventions as the denoiser's, where they differ (radiance in, other motion).
+  ResourceId illumination = color, albedo = albedo_in, motion = motion_in;
+  const auto& convention = impl_->config.motion;
+  if (impl_->config.color_input == ColorInput::Radiance || convention != MotionConvention::ours()) {
+    illumination = g.add_image("demodulated", w, h, F::RGBA32F);
+    albedo = g.add_image("modulation", w, h, F::RGBA16F);
+    motion = g.add_image("motion_pixels", w, h, F::RGBA32F);
+    const auto scale = motion_scale(convention, w, h);
+    passes::add_convert_inputs(g, impl_->pipelines, {color, albedo_in, motion_in, illumination, albedo, motion},
+                               {impl_->config.color_input == ColorInput::Radiance, scale[0], scale[1]});
+    // Demodulated colour needs only the motion converted: the caller's colour and albedo are read
+    // as they are (the pass's copies would round the albedo to fp16).
+    if (impl_->config.color_input == ColorInput::Demodulated) illumination = color, albedo = albedo_in;
+  }
+
   if (impl_->config.validate) {
     const ResourceId counts =
         g.import_buffer("input_counts", impl_->input_counts, impl_->input_counts_state, passes::kInputCounts * 4);
     passes::add_validate_inputs(g, impl_->pipelines,
-                                {illumination, albedo, normal, depth, motion, depth_normal, counts});
+                                {color, albedo_in, normal, depth, motion, depth_normal, counts});
     g.output(counts, hal::State::CopySrc);
     impl_->input_counts_state = hal::State::CopySrc;
   }

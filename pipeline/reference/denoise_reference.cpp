@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asvgf/denoiser.hpp"
 #include "reference/denoise_math.hpp"
 
 namespace asvgf::reference {
@@ -17,13 +18,32 @@ int clampi(int v, int lo, int hi) { return std::min(std::max(v, lo), hi); }
 
 }  // namespace
 
+ConvertedInputs convert_inputs(const ImageD& color, const ImageD& albedo, const ImageD& motion, bool color_is_radiance,
+                               double scale_x, double scale_y) {
+  const int w = color.width, h = color.height;
+  ConvertedInputs out{ImageD(w, h, 4), ImageD(w, h, 4), ImageD(w, h, 4)};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        const double a = albedo.at(x, y, c);
+        const double m = !color_is_radiance ? a : (std::isfinite(a) && a >= 1e-3 ? a : 1.0);
+        out.illumination.at(x, y, c) = color_is_radiance ? color.at(x, y, c) / m : color.at(x, y, c);
+        out.modulation.at(x, y, c) = m;
+      }
+      out.modulation.at(x, y, 3) = 1.0;
+      out.motion.at(x, y, 0) = scale_x * motion.at(x, y, 0);
+      out.motion.at(x, y, 1) = scale_y * motion.at(x, y, 1);
+    }
+  return out;
+}
+
 ImageD pack_surface(const ImageD& depth, const ImageD& normal, bool depth_gradient_given) {
   const int w = depth.width, h = depth.height;
   ImageD out(w, h, 4);
   auto depth_at = [&](int x, int y) {
     if (!depth.inside(x, y)) return 0.0;
     const double z = depth.at(x, y, 0);
-    return std::isfinite(z) && z > 0 ? z : 0.0;
+    return asvgf::is_background_depth(z) ? 0.0 : z;
   };
   // The smaller difference to a neighbour along the axis that is not background; 0 if neither is.
   auto axis_gradient = [&](int x, int y, int ax, int ay, double z) {
@@ -37,9 +57,7 @@ ImageD pack_surface(const ImageD& depth, const ImageD& normal, bool depth_gradie
     for (int x = 0; x < w; ++x) {
       const double z = depth.at(x, y, 0);
       const std::array<double, 3> n{normal.at(x, y, 0), normal.at(x, y, 1), normal.at(x, y, 2)};
-      const double l1 = std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]);
-      if (!(std::isfinite(z) && z > 0) || any_not_finite(n[0], n[1], n[2]) || !(l1 >= 1e-30 && std::isfinite(l1)))
-        continue;
+      if (asvgf::is_background(z, n)) continue;
       double dz = depth.at(x, y, 1);
       if (!depth_gradient_given || !std::isfinite(dz) || dz < 0)
         dz = std::max(axis_gradient(x, y, 1, 0, z), axis_gradient(x, y, 0, 1, z));

@@ -17,6 +17,15 @@ namespace asvgf::reference {
 // (xyz) as depth_normal (z, dz, octahedral normal), all zero on background.
 ImageD pack_surface(const ImageD& depth, const ImageD& normal, bool depth_gradient_given);
 
+// convert_inputs.comp: a renderer's colour (radiance when `color_is_radiance`), albedo and motion
+// as the denoiser's illumination, re-modulation albedo and motion (scale_x, scale_y:
+// asvgf::motion_scale).
+struct ConvertedInputs {
+  ImageD illumination, modulation, motion;  // 4 channels each (rgb, rgb, xy)
+};
+ConvertedInputs convert_inputs(const ImageD& color, const ImageD& albedo, const ImageD& motion, bool color_is_radiance,
+                               double scale_x, double scale_y);
+
 // gradient.comp: (delta, Delta) per 3x3 stratum, ceil(w/3) x ceil(h/3).
 ImageD gradient(const ImageD& illumination, const ImageD& gradient_prev);
 

@@ -2,6 +2,7 @@
 
 #include "render/atomic_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -95,8 +96,42 @@ void write_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t
   write_file_atomic(path, encode_exr(path, w, h, rgba));
 }
 
-ExrImage read_exr(const std::filesystem::path& path) {
+namespace {
+
+// "ViewLayer.Combined, ViewLayer.Depth" for channels "ViewLayer.Combined.R", ..., "ViewLayer.Depth.Z".
+std::string layers_of(const std::vector<std::string>& channels) {
+  std::vector<std::string> layers;
+  for (const auto& c : channels) {
+    const auto dot = c.rfind('.');
+    const std::string layer = dot == std::string::npos ? "(no layer)" : c.substr(0, dot);
+    if (std::find(layers.begin(), layers.end(), layer) == layers.end()) layers.push_back(layer);
+  }
+  std::string text;
+  for (const auto& l : layers) text += (text.empty() ? "" : ", ") + l;
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> read_exr_channel_names(const std::filesystem::path& path) {
+  EXRVersion version;
+  EXRHeader header;
+  InitEXRHeader(&header);
+  const char* err = nullptr;
+  if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS || version.multipart || version.non_image ||
+      ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    if (err) FreeEXRErrorMessage(err);
+    throw ImageIoError(path.string() + ": cannot read EXR: not a single-part OpenEXR file (or unreadable)");
+  }
+  std::vector<std::string> names;
+  for (int i = 0; i < header.num_channels; ++i) names.emplace_back(header.channels[i].name);
+  FreeEXRHeader(&header);
+  return names;
+}
+
+ExrImage read_exr(const std::filesystem::path& path, std::span<const std::string> slots) {
   const std::string name = path.string();
+  if (slots.size() > 4) throw ImageIoError(name + ": at most 4 channels can be read into one image");
   EXRVersion version;
   if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS)
     throw ImageIoError(name + ": cannot read EXR: not an OpenEXR file (or unreadable)");
@@ -119,21 +154,37 @@ ExrImage read_exr(const std::filesystem::path& path) {
     out.channels.push_back(channel);
     if (header.pixel_types[i] == TINYEXR_PIXELTYPE_UINT) unsupported = channel;
     header.requested_pixel_types[i] = TINYEXR_PIXELTYPE_FLOAT;
-    for (int c = 0; c < 4; ++c)
-      if (channel == std::string(1, "RGBA"[c])) index[c] = i;
+    for (std::size_t c = 0; c < 4; ++c)
+      if (slots.empty() ? channel == std::string(1, "RGBA"[c]) : c < slots.size() && channel == slots[c])
+        index[c] = i;
+  }
+  if (!slots.empty()) {
+    // Named channels (a multilayer file's "Layer.Pass.Channel"): every one must be there.
+    for (std::size_t c = 0; c < slots.size(); ++c)
+      if (index[c] < 0) {
+        const std::string layers = layers_of(out.channels);
+        FreeEXRHeader(&header);
+        throw ImageIoError(name + ": cannot read EXR: no channel '" + slots[c] + "' (its layers: " + layers + ")");
+      }
+    out.channels.assign({"R", "G", "B", "A"});
+    out.channels.resize(slots.size());
   }
   if (!unsupported.empty()) {
     FreeEXRHeader(&header);
     throw ImageIoError(name + ": cannot read EXR: channel " + unsupported + " holds unsigned integers, not floats");
   }
   // One channel of any name is a grey image (as tinyexr's LoadEXR reads it).
-  if (header.num_channels == 1) {
+  if (slots.empty() && header.num_channels == 1) {
     index[0] = index[1] = index[2] = 0;
     for (const char* c : {"R", "G", "B"})
       if (out.channels.front() != c) out.channels.emplace_back(c);
   }
   if (index[0] < 0 && index[1] < 0 && index[2] < 0 && index[3] < 0) {
+    const std::string layers = layers_of(out.channels);
     FreeEXRHeader(&header);
+    if (layers.find("(no layer)") == std::string::npos)
+      throw ImageIoError(name + ": cannot read EXR: a multilayer file (layers: " + layers +
+                         "): name its channels (asvgf denoise --from cycles, or --channels BUFFER=CHANNELS)");
     throw ImageIoError(name + ": cannot read EXR: no R, G, B or A channel (and more than one channel)");
   }
   EXRImage image;

@@ -33,7 +33,11 @@ struct ExrImage {
 };
 // Reads a single-part OpenEXR file (half or float channels, scanline or tiled): R, G, B and A by
 // name, each absent one 0 (A: 1); a file of one channel of any name is grey (into R, G and B).
-// Throws ImageIoError naming the file.
-ExrImage read_exr(const std::filesystem::path& path);
+// With `slots` (at most 4 channel names, e.g. a multilayer file's "ViewLayer.Vector.X"), those
+// channels go into R, G, B, A in order instead, each one required; `channels` is then "R", "G", ...
+// for the slots read. Throws ImageIoError naming the file (and, for a missing channel, its layers).
+ExrImage read_exr(const std::filesystem::path& path, std::span<const std::string> slots = {});
+// The channel names a single-part OpenEXR file declares. Throws ImageIoError naming the file.
+std::vector<std::string> read_exr_channel_names(const std::filesystem::path& path);
 
 }  // namespace asvgf::render

@@ -1,7 +1,7 @@
 // pack_surface.comp: the renderer's linear depth and world-space normal as the denoiser's
-// depth_normal texel (common/denoise.glsl: z, depth gradient, octahedral normal). A pixel whose depth
-// is not finite or not positive, or whose normal is not finite or (nearly) zero, is background (all zero):
-// no filter weight reaches it and no history is reprojected onto it. The depth gradient is the
+// depth_normal texel (common/denoise.glsl: z, depth gradient, octahedral normal). A background pixel
+// (common/surface.glsl: no finite depth in (0, 1e9), or a zero normal) is all zero: no filter weight
+// reaches it and no history is reprojected onto it. The depth gradient is the
 // renderer's (depth.y) when given, else estimated from the neighbours: per axis the smaller
 // difference to a neighbour that is not background (the one on the same surface at a silhouette),
 // then the larger of the two axes, as the G-buffer's max(|dz/dx|, |dz/dy|).
@@ -12,6 +12,7 @@
 #include "common/color.glsl"
 #include "common/compute.glsl"
 #include "common/octahedral.glsl"
+#include "common/surface.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -29,7 +30,7 @@ layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D depth_normal;
 float depth_at(ivec2 q) {
   if (q.x < 0 || q.y < 0 || !inside(q, params.width, params.height)) return 0.0;
   float z = texelFetch(depth, q, 0).x;
-  return not_finite(z) || z <= 0.0 ? 0.0 : z;
+  return background_depth(z) ? 0.0 : z;
 }
 
 // The smaller |z_q - z| over the two neighbours along `axis` that are not background; 0 if neither.
@@ -46,9 +47,8 @@ void main() {
   if (!inside(p, params.width, params.height)) return;
   vec2 zg = texelFetch(depth, p, 0).xy;
   vec3 n = texelFetch(normal, p, 0).xyz;
-  float l1 = abs(n.x) + abs(n.y) + abs(n.z);
   vec4 texel = vec4(0.0);
-  if (!not_finite(zg.x) && zg.x > 0.0 && !any_not_finite(n) && l1 >= 1e-30 && !not_finite(l1)) {
+  if (!is_background(zg.x, n)) {
     float dz = zg.y;
     if (params.depth_gradient_given == 0u || not_finite(dz) || dz < 0.0)
       dz = max(axis_gradient(p, zg.x, ivec2(1, 0)), axis_gradient(p, zg.x, ivec2(0, 1)));

@@ -13,3 +13,4 @@ asvgf_add_shader(composite SOURCE denoise/composite.comp VARIANTS one split=SPLI
 asvgf_add_shader(pack_surface SOURCE denoise/pack_surface.comp)
 asvgf_add_shader(gradient_reprojected SOURCE denoise/gradient_reprojected.comp)
 asvgf_add_shader(validate_inputs SOURCE denoise/validate_inputs.comp)
+asvgf_add_shader(convert_inputs SOURCE denoise/convert_inputs.comp)

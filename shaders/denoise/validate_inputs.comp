@@ -7,6 +7,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
 #include "common/compute.glsl"
+#include "common/surface.glsl"
 #include "common/denoise.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -54,7 +55,9 @@ void main() {
   count(3u, any_not_finite(a) || any(lessThan(a, vec3(0.0))));
   count(7u, not_finite(z));
   count(8u, !not_finite(z) && z < 0.0);
-  bool surface = !not_finite(z) && z > 0.0;
+  // Surface as the denoiser sees it (common/surface.glsl), but a normal that is not finite on a
+  // surface depth is counted as a bad normal rather than called background.
+  bool surface = !background_depth(z) && !(background_normal(n) && !any_not_finite(n));
   count(4u, surface);
   if (surface) {
     count(6u, any_not_finite(n));

@@ -138,7 +138,7 @@ Frames sliding(int shift, float mx_scale, float my) {
 
 }  // namespace
 
-TEST_CASE("denoise inputs: the motion check accepts the convention and names the sign and unit mistakes") {
+TEST_CASE("denoise inputs: the motion check accepts the convention and names the sign, unit and y-axis mistakes") {
   const Frames right = sliding(6, 1.0f, 0.0f);
   const auto ok = cli::check_motion(right.previous_depth, right.depth, right.motion, 48, 16);
   CHECK(ok.moving_pixels == 48 * 16);
@@ -149,12 +149,37 @@ TEST_CASE("denoise inputs: the motion check accepts the convention and names the
   const auto neg = cli::check_motion(negated.previous_depth, negated.depth, negated.motion, 48, 16);
   REQUIRE(neg.problem);
   CHECK(neg.best.convention == "negated");
-  CHECK(neg.problem->find("previous minus current") != std::string::npos);
+  CHECK(neg.problem->find("Read them with --motion-sign current-minus-previous --motion-units pixels --motion-y down") !=
+        std::string::npos);
 
   const Frames uv = sliding(6, 1.0f / 48.0f, 0.0f);
   const auto in_uv = cli::check_motion(uv.previous_depth, uv.depth, uv.motion, 48, 16);
   REQUIRE(in_uv.problem);
   CHECK(in_uv.best.convention == "in UV units");
+
+  // A scene sliding right and down (depth changes along x and y): vectors written with y up look
+  // y-flipped, and the setting that reads them is named.
+  Frames diagonal;
+  for (auto* v : {&diagonal.previous_depth, &diagonal.depth, &diagonal.motion})
+    v->assign(std::size_t(diagonal.w) * diagonal.h * 4, 0.0f);
+  auto zxy = [](int x, int y) { return 1.0f + static_cast<float>((((x / 4) % 5 + 5) % 5) + 5 * (((y / 2) % 4 + 4) % 4)); };
+  for (int y = 0; y < diagonal.h; ++y)
+    for (int x = 0; x < diagonal.w; ++x) {
+      const std::size_t i = (std::size_t(y) * diagonal.w + x) * 4;
+      diagonal.previous_depth[i] = zxy(x, y);
+      diagonal.depth[i] = zxy(x - 2, y - 3);
+      diagonal.motion[i] = -2.0f;
+      diagonal.motion[i + 1] = 3.0f;  // previous minus current is -3 with y down: +3 is y up
+    }
+  const auto flipped = cli::check_motion(diagonal.previous_depth, diagonal.depth, diagonal.motion, 48, 16);
+  REQUIRE(flipped.problem);
+  CHECK(flipped.best.convention == "y-flipped");
+  CHECK(flipped.problem->find("--motion-y up") != std::string::npos);
+  // Given as Cycles' convention (y up) and converted, the same vectors are right.
+  for (std::size_t i = 1; i < diagonal.motion.size(); i += 4) diagonal.motion[i] = -diagonal.motion[i];
+  CHECK(!cli::check_motion(diagonal.previous_depth, diagonal.depth, diagonal.motion, 48, 16,
+                           asvgf::MotionConvention::cycles())
+             .problem);
 
   const Frames still = sliding(0, 1.0f, 0.0f);
   const auto none = cli::check_motion(still.previous_depth, still.depth, still.motion, 48, 16);

@@ -11,9 +11,11 @@
 //  - RGBA8 display: one 8-bit step (rounding of the store plus fp32 tone-curve error).
 #include <doctest/doctest.h>
 
+#include "asvgf/denoiser.hpp"
 #include "pipeline/denoise_harness.hpp"
 #include "passes/atrous.hpp"
 #include "passes/composite.hpp"
+#include "passes/convert_inputs.hpp"
 #include "passes/gradient.hpp"
 #include "passes/gradient_atrous.hpp"
 #include "passes/pack_surface.hpp"
@@ -41,6 +43,69 @@ auto fp32_tolerance(double magnitude) {
 }
 
 }  // namespace
+
+TEST_CASE("denoise passes: convert_inputs demodulates radiance where the albedo allows and converts motion conventions") {
+  ValidatedDevice device;
+  passes::PipelineCache pipelines(*device);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // (radiance?, motion scale): ours, Cycles (y up), NRD-style UV at 17x13, current-minus-previous NDC.
+  const struct {
+    bool radiance;
+    asvgf::MotionConvention convention;
+  } cases[] = {{true, asvgf::MotionConvention::ours()},
+               {true, asvgf::MotionConvention::cycles()},
+               {false, asvgf::MotionConvention::nrd()},
+               {true, {false, asvgf::MotionUnits::Ndc, false}}};
+  for (const auto& size : kSizes)
+    for (const auto& k : cases) {
+      const int w = size[0], h = size[1];
+      CAPTURE(w);
+      CAPTURE(h);
+      CAPTURE(k.radiance);
+      Random r(41u + static_cast<std::uint32_t>(w));
+      ImageD color(w, h, 4), albedo(w, h, 4), motion(w, h, 4);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          for (int c = 0; c < 4; ++c) {
+            color.at(x, y, c) = r.uniform(0, 4);
+            albedo.at(x, y, c) = r.chance(0.1) ? r.uniform(0, 2e-3) : r.uniform(0.01, 3);  // emitters above 1
+            motion.at(x, y, c) = r.uniform(-20, 20);
+          }
+      albedo.at(0, 0, 0) = nan;   // no albedo: the radiance passes through
+      albedo.at(1, 0, 1) = -0.5;  // likewise
+      albedo.at(2, 0, 2) = 0.0;
+      const auto scale = asvgf::motion_scale(k.convention, static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h));
+      GraphHarness harness(*device);
+      RenderGraph g;
+      const auto cin = harness.input(g, "color", color, F::RGBA32F);
+      const auto ain = harness.input(g, "albedo", albedo, F::RGBA32F);
+      const auto min = harness.input(g, "motion", motion, F::RGBA32F);
+      const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
+      const auto illum = g.add_image("illumination", uw, uh, F::RGBA32F);
+      const auto modulation = g.add_image("modulation", uw, uh, F::RGBA16F);
+      const auto mout = g.add_image("motion_out", uw, uh, F::RGBA32F);
+      passes::add_convert_inputs(g, pipelines, {cin, ain, min, illum, modulation, mout}, {k.radiance, scale[0], scale[1]});
+      ImageD got_i, got_m, got_v;
+      harness.readback(g, illum, &got_i);
+      harness.readback(g, modulation, &got_m);
+      harness.readback(g, mout, &got_v);
+      harness.run(g);
+      const auto want = ref::convert_inputs(quantize(color, F::RGBA32F), quantize(albedo, F::RGBA32F),
+                                            quantize(motion, F::RGBA32F), k.radiance, scale[0], scale[1]);
+      if (k.radiance) {
+        // A division: fp32 error relative to the quotient, which reaches 4 / 1e-3.
+        DENOISE_CHECK_CLOSE(compare(got_i, want.illumination, 3, [](double v) { return 1e-6 * std::abs(v) + 1e-7; }),
+                            "illumination");
+        DENOISE_CHECK_CLOSE(compare(got_m, want.modulation, 3, fp16_tolerance(0)), "modulation");
+        CHECK(got_m.at(0, 0, 0) == 1.0);
+        CHECK(got_m.at(1, 0, 1) == 1.0);
+        CHECK(got_m.at(2, 0, 2) == 1.0);
+      } else {
+        DENOISE_CHECK_CLOSE(compare(got_i, want.illumination, 3, fp32_tolerance(0)), "illumination");
+      }
+      DENOISE_CHECK_CLOSE(compare(got_v, want.motion, 2, [](double v) { return 1e-6 * std::abs(v); }), "motion");
+    }
+}
 
 TEST_CASE("denoise passes: pack_surface matches the CPU reference; bad depths and normals become background") {
   ValidatedDevice device;
