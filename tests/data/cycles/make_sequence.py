@@ -1,8 +1,9 @@
 # Makes the Cycles test sequence in this folder (Blender 3.4, Debian's `blender`):
 #   blender -b --factory-startup -P tests/data/cycles/make_sequence.py -- OUT_DIR [WIDTH HEIGHT FRAMES REF_SPP]
-# A closed room (white ceiling and floor, red and green side walls) with a checker-textured box, a
+# A room (white ceiling and floor, red and green side walls, the back wall half high so that the sky
+# shows above it: Cycles writes depth 1e10 and a zero normal there) with a checker-textured box, a
 # glossy sphere, and an area light under the ceiling that switches off at frame 5 (of 1..8); the
-# camera dollies and pans. Writes OUT_DIR/frame_NNNN.exr (1 spp, seed animated: multilayer EXR with
+# camera pans, dollies and cranes up. Writes OUT_DIR/frame_NNNN.exr (1 spp, seed animated: multilayer EXR with
 # Combined, Denoising Albedo, Normal, Depth and Vector) and OUT_DIR/reference_NNNN.exr (REF_SPP
 # samples, Combined only). Motion blur off, Cycles' own denoising off, as the README tutorial says.
 import math
@@ -53,7 +54,7 @@ red = material("red", (0.7, 0.1, 0.1))
 green = material("green", (0.1, 0.6, 0.1))
 box("floor", (0, 0, -1.05), (2, 2, 0.05), white)
 box("ceiling", (0, 0, 1.05), (2, 2, 0.05), white)
-box("back", (0, 2.05, 0), (2, 0.05, 1.1), white)
+box("back", (0, 2.05, -0.55), (2, 0.05, 0.55), white)  # half height: the sky shows above it
 box("front", (0, -3.05, 0), (2, 0.05, 1.1), white)
 box("left", (-2.05, 0, 0), (0.05, 2, 1.1), red)
 box("right", (2.05, 0, 0), (0.05, 2, 1.1), green)
@@ -74,15 +75,16 @@ for fc in light.data.animation_data.action.fcurves:
     for k in fc.keyframe_points:
         k.interpolation = "CONSTANT"
 scene.world = bpy.data.worlds.new("dark")
-scene.world.color = (0.02, 0.02, 0.025)  # a little light through nothing: the room is closed
+scene.world.color = (0.02, 0.02, 0.025)  # a dim sky
 
 bpy.ops.object.camera_add(location=(0.0, -2.8, 0.1))
 camera = bpy.context.object
 scene.camera = camera
 camera.data.lens = 22
-for frame, (x, yaw) in {1: (-0.3, -6.0), frames: (0.3, 6.0)}.items():
-    camera.location = (x, -2.8 + 0.05 * frame, 0.1)
-    camera.rotation_euler = (math.radians(88), 0, math.radians(yaw))
+# Pan, dolly and crane at once, so that the motion vectors have x and y components everywhere.
+for frame, (x, z, pitch, yaw) in {1: (-0.3, -0.35, 84.0, -6.0), frames: (0.3, 0.35, 94.0, 6.0)}.items():
+    camera.location = (x, -2.8 + 0.05 * frame, z)
+    camera.rotation_euler = (math.radians(pitch), 0, math.radians(yaw))
     camera.keyframe_insert("location", frame=frame)
     camera.keyframe_insert("rotation_euler", frame=frame)
 
