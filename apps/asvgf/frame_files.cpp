@@ -23,6 +23,18 @@ void refuse_overwriting_inputs(const std::vector<std::pair<std::string, std::fil
   }
 }
 
+void refuse_folder_holding_inputs(const std::string& option, const std::filesystem::path& folder,
+                                  const std::vector<std::pair<std::string, std::filesystem::path>>& inputs) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec)) return;  // a folder yet to be made holds nothing
+  for (const auto& in : inputs) {
+    const auto parent = std::filesystem::absolute(in.second, ec).parent_path();
+    if (std::filesystem::exists(in.second, ec) && std::filesystem::equivalent(parent, folder, ec))
+      throw CLI::ValidationError(option, "'" + folder.string() + "' holds the input '" + in.second.string() + "' (" +
+                                             in.first + "), which a report could replace: choose another " + option);
+  }
+}
+
 void report_stale_partials(const char* command, const std::filesystem::path& folder) {
   for (const auto& file : render::remove_stale_partials(folder))
     std::fprintf(stderr, "asvgf %s: removed %s, a temporary file of a run that did not finish\n", command,

@@ -28,6 +28,11 @@ inline void write_metrics_csv(const std::filesystem::path& dir, const std::strin
 void refuse_overwriting_inputs(const std::vector<std::pair<std::string, std::filesystem::path>>& inputs,
                                const std::vector<std::pair<std::string, std::filesystem::path>>& outputs);
 
+// Throws CLI::ValidationError naming `option` and the file when an input file lies in `folder`
+// (compared as files: links and ".." are seen through).
+void refuse_folder_holding_inputs(const std::string& option, const std::filesystem::path& folder,
+                                  const std::vector<std::pair<std::string, std::filesystem::path>>& inputs);
+
 // Removes the temporary files that killed runs left in `folder` and says so on stderr.
 void report_stale_partials(const char* command, const std::filesystem::path& folder);
 

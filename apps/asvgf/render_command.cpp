@@ -66,6 +66,15 @@ int run_render(RenderOptions& o) {
   }
 
   const std::filesystem::path dir(o.out);
+  // No output may replace the scene file or a texture it loaded.
+  std::vector<std::pair<std::string, std::filesystem::path>> input_files, output_files;
+  if (std::filesystem::path(o.scene.scene).extension() == ".json") input_files.emplace_back("--scene", o.scene.scene);
+  for (const auto& t : scene.textures) input_files.emplace_back("--scene (a texture)", t.name);
+  for (int f = 0; f < frames; ++f)
+    for (const char* prefix : {"frame", "reference", "color", "albedo", "normal", "depth", "motion", "gradient"})
+      for (const char* ext : {"exr", "png"}) output_files.emplace_back("--out", dir / frame_file(prefix, f, ext));
+  output_files.emplace_back("--out", dir / "metrics.csv");
+  refuse_overwriting_inputs(input_files, output_files);
   std::filesystem::create_directories(dir);
   report_stale_partials("render", dir);
   if (!o.quiet)

@@ -229,6 +229,12 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
                                  const std::filesystem::path& dir) {
   const auto start = std::chrono::steady_clock::now();
   const scene::Scene scene = load_scene(o.scene);
+  // The report writes many files into `dir` (plots among them): it refuses a folder that holds the
+  // scene file or a texture it loaded rather than risk replacing one.
+  std::vector<std::pair<std::string, std::filesystem::path>> inputs;
+  if (std::filesystem::path(o.scene.scene).extension() == ".json") inputs.emplace_back("--scene", o.scene.scene);
+  for (const auto& t : scene.textures) inputs.emplace_back("--scene (a texture)", t.name);
+  refuse_folder_holding_inputs("--out", dir, inputs);
   // Without glossy materials there is one signal anyway: a split run would repeat its twin.
   if (std::none_of(scene.materials.begin(), scene.materials.end(), [](const auto& m) { return m.glossy(); }))
     std::erase_if(specs, [](const report::RunSpec& s) { return s.specular_split; });

@@ -67,14 +67,19 @@ def run(command, out_dir, fault, variable="ASVGF_FAULT"):
     return subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
 
 
-def sweep_files(out_dir, command):
-    counted = run(command, out_dir, "count", "ASVGF_FILE_FAULT")
+def counted_run(command, out_dir, variable, label):
+    """Runs the command unfaulted with `variable`=count; returns [(kind, calls)] from its `label` line."""
+    counted = run(command, out_dir, "count", variable)
     if counted.returncode != 0:
         fail("the unfaulted run exits %d: %s" % (counted.returncode, counted.stderr.strip()[-400:]))
-    match = re.search(r"file fault counts: (.*)", counted.stderr)
+    match = re.search(r"^%s: (.*)" % label, counted.stderr, re.M)
     if not match:
-        fail("the unfaulted run printed no file fault counts")
-    counts = [(op, int(n)) for op, n in (item.split(" ") for item in match.group(1).split(", "))]
+        fail("the unfaulted run printed no " + label)
+    return [(kind, int(n)) for kind, n in (item.split(" ") for item in match.group(1).split(", "))]
+
+
+def sweep_files(out_dir, command):
+    counts = counted_run(command, out_dir, "ASVGF_FILE_FAULT", "file fault counts")
     if sum(n for _, n in counts) == 0:
         fail("the unfaulted run wrote no file")
     total = 0
@@ -107,13 +112,7 @@ def main():
     if files_mode:
         sweep_files(out_dir, command)
         return
-    counted = run(command, out_dir, "count")
-    if counted.returncode != 0:
-        fail("the unfaulted run exits %d: %s" % (counted.returncode, counted.stderr.strip()[-400:]))
-    match = re.search(r"fault counts: (.*)", counted.stderr)
-    if not match:
-        fail("the unfaulted run printed no fault counts")
-    counts = [(kind, int(n)) for kind, n in (item.split(" ") for item in match.group(1).split(", "))]
+    counts = counted_run(command, out_dir, "ASVGF_FAULT", "fault counts")
     complete = files(out_dir)
     total = after_work = 0
     for kind, n in counts:
