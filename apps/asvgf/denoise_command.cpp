@@ -10,6 +10,7 @@
 #include "asvgf/denoiser.hpp"
 #include "commands.hpp"
 #include "frame_files.hpp"
+#include "color_check.hpp"
 #include "frame_sequence.hpp"
 #include "input_conventions.hpp"
 #include "motion_check.hpp"
@@ -35,6 +36,7 @@ struct DenoiseOptions {
   bool quiet = false;
   InputConventionOptions conventions;
   const CLI::Option* gradient_source_option = nullptr;  // to tell an explicit --gradient-source from the default
+  bool color_from_folder = false;  // --color filled from a render --aovs folder: demodulated
 };
 
 // --input DIR fills every pattern not given explicitly with DIR/<buffer>_%04d.exr (the gradient
@@ -56,6 +58,7 @@ void apply_input_folder(DenoiseOptions& o) {
   };
   // Depth files from render --aovs hold the depth gradient in G; a --depth given beside --input may not.
   if (o.depth.empty()) o.depth_gradient = true;
+  o.color_from_folder = o.color.empty();
   fill(o.color, "color");
   fill(o.albedo, "albedo");
   fill(o.normal, "normal");
@@ -118,7 +121,7 @@ int run_denoise(DenoiseOptions& o) {
                                std::to_string(o.first + available) + "): missing; --frames asks for " +
                                std::to_string(frames));
 
-  const bool own_folder = !o.input.empty() && o.conventions.from.empty();
+  const bool own_folder = o.color_from_folder;
   const std::string cycles_layer = o.conventions.from == "cycles"
                                        ? cycles_layer_of(render::read_exr_channel_names(color.path(o.first)))
                                        : std::string();
@@ -208,6 +211,11 @@ int run_denoise(DenoiseOptions& o) {
       device->upload_image(in.image, std::as_bytes(std::span(images.back().rgba)));
     }
     render::ExrImage& depth_now = images[3];
+    if (i == 0 && o.validate) {
+      const ColorKindCheck kind = check_color_kind(images[0].rgba, images[1].rgba, depth_now.rgba,
+                                                   conventions.color == ColorInput::Radiance);
+      if (kind.problem) std::fprintf(stderr, "%sframe %d: %s\n", o.quiet ? "" : "\n", f, kind.problem->c_str());
+    }
     if (i > 0 && o.motion_check) {
       // Judged in the denoiser's convention, as the GPU converts them (asvgf::motion_scale).
       const auto scale = motion_scale(conventions.motion, w, h);
