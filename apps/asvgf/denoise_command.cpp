@@ -37,6 +37,7 @@ struct DenoiseOptions {
   InputConventionOptions conventions;
   const CLI::Option* gradient_source_option = nullptr;  // to tell an explicit --gradient-source from the default
   bool color_from_folder = false;  // --color filled from a render --aovs folder: demodulated
+  const CLI::Option* first_option = nullptr;  // --first-frame given?
 };
 
 // --input DIR fills every pattern not given explicitly with DIR/<buffer>_%04d.exr (the gradient
@@ -111,6 +112,9 @@ int run_denoise(DenoiseOptions& o) {
     gradient_note = o.device.gradient_source == "reprojected" ? "reprojected" : "reshaded samples";
   }
 
+  // Without --first-frame the sequence starts at its lowest frame (Blender numbers from 1).
+  if (o.first_option && o.first_option->count() == 0)
+    if (const auto lowest = color.lowest_frame()) o.first = *lowest;
   const int available = count_frames(color, o.first, o.frames);
   if (available == 0)
     throw render::ImageIoError(color.path(o.first).string() + " (color, frame " + std::to_string(o.first) +
@@ -320,9 +324,8 @@ std::function<int()> add_denoise_command(CLI::App& app) {
   cmd->add_option("--method", o->method, "ema, svgf or asvgf")
       ->check(CLI::IsMember({"ema", "svgf", "asvgf"}))
       ->capture_default_str();
-  cmd->add_option("--first-frame", o->first, "Number of the first frame")
-      ->check(CLI::Range(0, 99999999))
-      ->capture_default_str();
+  cmd->add_option("--first-frame", o->first, "Number of the first frame (default: the lowest --color has)")
+      ->check(CLI::Range(0, 99999999));
   cmd->add_option("--frames", o->frames, "Frames to denoise (default: every frame --color has from the first on)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--out", o->out, "Output folder")->capture_default_str();
@@ -331,6 +334,7 @@ std::function<int()> add_denoise_command(CLI::App& app) {
   add_device_options(*cmd, o->device);
   add_denoise_options(*cmd, o->device);
   o->gradient_source_option = cmd->get_option("--gradient-source");
+  o->first_option = cmd->get_option("--first-frame");
   return [o] { return run_denoise(*o); };
 }
 

@@ -65,6 +65,17 @@ std::optional<int> FramePattern::frame_of(const std::filesystem::path& file) con
   return frame;
 }
 
+std::optional<int> FramePattern::lowest_frame() const {
+  const std::filesystem::path folder = path(0).parent_path();
+  std::error_code ec;
+  std::optional<int> lowest;
+  for (const auto& entry : std::filesystem::directory_iterator(folder.empty() ? "." : folder, ec)) {
+    const auto frame = frame_of(entry.path());
+    if (frame && (!lowest || *frame < *lowest)) lowest = frame;
+  }
+  return lowest;
+}
+
 int count_frames(const FramePattern& pattern, int first, int wanted) {
   int n = 0;
   while (std::filesystem::exists(pattern.path(first + n))) ++n;

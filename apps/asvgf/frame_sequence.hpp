@@ -22,6 +22,8 @@ class FramePattern {
   std::filesystem::path path(int frame) const;
   // The frame number of a file this pattern names (same folder assumed), or nothing.
   std::optional<int> frame_of(const std::filesystem::path& file) const;
+  // The lowest frame number with a file, or nothing.
+  std::optional<int> lowest_frame() const;
   bool empty() const { return pattern_.empty(); }
   const std::string& option() const { return option_; }
 
