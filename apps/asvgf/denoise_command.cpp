@@ -8,9 +8,9 @@
 #include <sstream>
 
 #include "asvgf/denoiser.hpp"
+#include "color_check.hpp"
 #include "commands.hpp"
 #include "frame_files.hpp"
-#include "color_check.hpp"
 #include "frame_sequence.hpp"
 #include "input_conventions.hpp"
 #include "motion_check.hpp"
@@ -36,8 +36,8 @@ struct DenoiseOptions {
   bool quiet = false;
   InputConventionOptions conventions;
   const CLI::Option* gradient_source_option = nullptr;  // to tell an explicit --gradient-source from the default
-  bool color_from_folder = false;  // --color filled from a render --aovs folder: demodulated
-  const CLI::Option* first_option = nullptr;  // --first-frame given?
+  bool color_from_folder = false;                       // --color filled from a render --aovs folder: demodulated
+  const CLI::Option* first_option = nullptr;            // --first-frame given?
 };
 
 // --input DIR fills every pattern not given explicitly with DIR/<buffer>_%04d.exr (the gradient
@@ -102,9 +102,10 @@ int run_denoise(DenoiseOptions& o) {
   std::string gradient_note;
   if (o.method == "asvgf" && gradient.empty() && o.device.gradient_source == "reshaded") {
     if (o.gradient_source_option && o.gradient_source_option->count() > 0)
-      throw CLI::ValidationError("--gradient-source", "reshaded needs gradient samples (--gradient, or gradient_NNNN.exr "
-                                                      "in --input); reprojected needs none; --method svgf is constant "
-                                                      "alpha");
+      throw CLI::ValidationError("--gradient-source",
+                                 "reshaded needs gradient samples (--gradient, or gradient_NNNN.exr "
+                                 "in --input); reprojected needs none; --method svgf is constant "
+                                 "alpha");
     o.device.gradient_source = "reprojected";
     o.device.denoise.gradient_source = GradientSource::Reprojected;
     gradient_note = "reprojected (no gradient samples given)";
@@ -216,8 +217,8 @@ int run_denoise(DenoiseOptions& o) {
     }
     render::ExrImage& depth_now = images[3];
     if (i == 0 && o.validate) {
-      const ColorKindCheck kind = check_color_kind(images[0].rgba, images[1].rgba, depth_now.rgba,
-                                                   conventions.color == ColorInput::Radiance);
+      const ColorKindCheck kind =
+          check_color_kind(images[0].rgba, images[1].rgba, depth_now.rgba, conventions.color == ColorInput::Radiance);
       if (kind.problem) std::fprintf(stderr, "%sframe %d: %s\n", o.quiet ? "" : "\n", f, kind.problem->c_str());
     }
     if (i > 0 && o.motion_check) {
@@ -269,7 +270,8 @@ int run_denoise(DenoiseOptions& o) {
           read_frame(reference, f, {"reference", w, h, {"R", "G", "B"}, false, channels_of("reference")});
       const double relmse = render::relative_mse(hdr, ref.rgba);
       csv << f << "," << o.method << "," << std::to_string(relmse) << ","
-          << std::to_string(render::ssim(hdr, ref.rgba, w, h)) << "," << (timed ? std::to_string(gpu_ms) : "") << "," << gradient_note << "\n";
+          << std::to_string(render::ssim(hdr, ref.rgba, w, h)) << "," << (timed ? std::to_string(gpu_ms) : "") << ","
+          << gradient_note << "\n";
       note = "relMSE " + std::to_string(relmse);
     }
     progress.step(i + 1, note);
@@ -299,10 +301,12 @@ std::function<int()> add_denoise_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "denoise",
       "Denoise a frame sequence from per-buffer EXR files (e.g. from asvgf render --aovs); write EXR and PNG");
-  cmd->add_option("--input", o->input,
-                  "Folder written by asvgf render --aovs (reads its {color,albedo,normal,depth,motion,gradient}_NNNN.exr, "
-                  "colour demodulated); with --from cycles the pattern of Blender's multilayer files");
-  cmd->add_option("--color", o->color, "Noisy radiance (RGB; --demodulated: divided by the albedo), e.g. frames/color_%04d.exr");
+  cmd->add_option(
+      "--input", o->input,
+      "Folder written by asvgf render --aovs (reads its {color,albedo,normal,depth,motion,gradient}_NNNN.exr, "
+      "colour demodulated); with --from cycles the pattern of Blender's multilayer files");
+  cmd->add_option("--color", o->color,
+                  "Noisy radiance (RGB; --demodulated: divided by the albedo), e.g. frames/color_%04d.exr");
   cmd->add_option("--albedo", o->albedo, "Albedo (RGB): the denoiser divides the radiance by it and multiplies back");
   cmd->add_option("--normal", o->normal, "World-space normals (RGB = xyz; 0 = background)");
   cmd->add_option("--depth", o->depth,

@@ -41,8 +41,10 @@ std::optional<int> FramePattern::frame_of(const std::filesystem::path& file) con
   const std::size_t at = [&] {
     for (std::size_t i = 0; i < pattern_.size(); ++i)
       if (pattern_[i] == '%') {
-        if (pattern_[i + 1] == '%') ++i;
-        else return i;
+        if (pattern_[i + 1] == '%')
+          ++i;
+        else
+          return i;
       }
     return pattern_.size();
   }();

@@ -39,7 +39,8 @@ void add_input_convention_options(CLI::App& cmd, InputConventionOptions& o) {
                  "Motion vectors as written by: ours (previous minus current, pixels, y down), cycles (y up), nrd "
                  "(previous minus current in UV units)")
       ->check(CLI::IsMember({"ours", "cycles", "nrd"}));
-  cmd.add_option("--motion-sign", o.motion_sign, "previous-minus-current or current-minus-previous (overrides the preset)")
+  cmd.add_option("--motion-sign", o.motion_sign,
+                 "previous-minus-current or current-minus-previous (overrides the preset)")
       ->check(CLI::IsMember({"previous-minus-current", "current-minus-previous"}));
   cmd.add_option("--motion-units", o.motion_units, "pixels, uv or ndc (overrides the preset)")
       ->check(CLI::IsMember({"pixels", "uv", "ndc"}));
@@ -60,8 +61,9 @@ InputConventions resolve_input_conventions(const InputConventionOptions& o, bool
   InputConventions c;
   if (o.from == "cycles") {
     if (cycles_layer.empty())
-      throw CLI::ValidationError("--from", "cycles: the first frame has no '<layer>.Combined.R' channel (is it a "
-                                           "multilayer EXR with the Combined pass?)");
+      throw CLI::ValidationError("--from",
+                                 "cycles: the first frame has no '<layer>.Combined.R' channel (is it a "
+                                 "multilayer EXR with the Combined pass?)");
     auto pass = [&](const std::string& name, const char* components) {
       std::vector<std::string> names;
       for (const char* k = components; *k; ++k) names.push_back(cycles_layer + "." + name + "." + *k);
@@ -79,9 +81,10 @@ InputConventions resolve_input_conventions(const InputConventionOptions& o, bool
     const auto eq = entry.find('=');
     const std::string buffer = eq == std::string::npos ? "" : entry.substr(0, eq);
     if (!kBuffers.count(buffer))
-      throw CLI::ValidationError("--channels", "'" + entry +
-                                                   "' is not BUFFER=C1,C2,... with BUFFER one of color, albedo, normal, "
-                                                   "depth, motion, reference");
+      throw CLI::ValidationError("--channels",
+                                 "'" + entry +
+                                     "' is not BUFFER=C1,C2,... with BUFFER one of color, albedo, normal, "
+                                     "depth, motion, reference");
     const auto names = split(entry.substr(eq + 1), ',');
     if (names.empty() || names.size() > 4 || std::any_of(names.begin(), names.end(), [](auto& n) { return n.empty(); }))
       throw CLI::ValidationError("--channels", "'" + entry + "' names 1 to 4 channels, none empty");
@@ -101,8 +104,9 @@ InputConventions resolve_input_conventions(const InputConventionOptions& o, bool
 }
 
 std::string motion_options(const MotionConvention& m) {
-  return std::string("--motion-sign ") + (m.previous_minus_current ? "previous-minus-current" : "current-minus-previous") +
-         " --motion-units " + units_name(m.units) + " --motion-y " + (m.y_up ? "up" : "down");
+  return std::string("--motion-sign ") +
+         (m.previous_minus_current ? "previous-minus-current" : "current-minus-previous") + " --motion-units " +
+         units_name(m.units) + " --motion-y " + (m.y_up ? "up" : "down");
 }
 
 std::string InputConventions::describe() const {

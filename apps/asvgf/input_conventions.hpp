@@ -14,10 +14,10 @@
 namespace asvgf::cli {
 
 struct InputConventionOptions {
-  std::string from;                       // "", "cycles"
-  std::vector<std::string> channels;      // BUFFER=C1,C2,... (repeatable)
-  bool demodulated = false;               // --demodulated: the colour is radiance / albedo
-  std::string motion_preset;              // ours, cycles, nrd ("": the --from preset's, else ours)
+  std::string from;                                 // "", "cycles"
+  std::vector<std::string> channels;                // BUFFER=C1,C2,... (repeatable)
+  bool demodulated = false;                         // --demodulated: the colour is radiance / albedo
+  std::string motion_preset;                        // ours, cycles, nrd ("": the --from preset's, else ours)
   std::string motion_sign, motion_units, motion_y;  // overrides of the preset ("" = the preset's)
 };
 

@@ -21,11 +21,14 @@ struct Candidate {
   bool flip_y;
   bool uv;
 };
-constexpr Candidate kCandidates[] = {
-    {"as given", 1, false, false},       {"negated", -1, false, false},
-    {"y-flipped", 1, true, false},       {"x-flipped", -1, true, false},
-    {"in UV units", 1, false, true},     {"negated, in UV units", -1, false, true},
-    {"y-flipped, in UV units", 1, true, true}, {"x-flipped, in UV units", -1, true, true}};
+constexpr Candidate kCandidates[] = {{"as given", 1, false, false},
+                                     {"negated", -1, false, false},
+                                     {"y-flipped", 1, true, false},
+                                     {"x-flipped", -1, true, false},
+                                     {"in UV units", 1, false, true},
+                                     {"negated, in UV units", -1, false, true},
+                                     {"y-flipped, in UV units", 1, true, true},
+                                     {"x-flipped, in UV units", -1, true, true}};
 constexpr int kCount = sizeof kCandidates / sizeof kCandidates[0];
 
 }  // namespace
@@ -74,7 +77,8 @@ MotionCheck check_motion(std::span<const float> previous_depth, std::span<const 
     std::snprintf(text, sizeof text,
                   "the vectors look %s: reprojected that way %.0f%% of %u moving pixels land on the same surface in "
                   "the previous frame, as given %.0f%%. Read them with %s",
-                  k.name, 100 * consistent[best], out.moving_pixels, 100 * consistent[0], motion_options(fixed).c_str());
+                  k.name, 100 * consistent[best], out.moving_pixels, 100 * consistent[0],
+                  motion_options(fixed).c_str());
     out.problem = text;
   }
   return out;

@@ -113,8 +113,8 @@ std::optional<ImageSize> parse_size(std::string_view text) {
 ImageSize parse_size_option(const std::string& option, const std::string& text) {
   const auto size = parse_size(text);
   if (!size)
-    throw CLI::ValidationError(option, "'" + text + "' is not WIDTHxHEIGHT with both in 1.." +
-                                           std::to_string(kMaxImageSide));
+    throw CLI::ValidationError(option,
+                               "'" + text + "' is not WIDTHxHEIGHT with both in 1.." + std::to_string(kMaxImageSide));
   return *size;
 }
 

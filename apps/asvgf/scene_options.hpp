@@ -4,8 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <memory>
 #include <optional>
-#include <string_view>
 #include <string>
+#include <string_view>
 
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"

@@ -64,7 +64,7 @@ std::string_view setting_range(std::string_view setting);
 
 struct SettingProblem {
   SettingRange setting;
-  std::string value;  // the refused value as text
+  std::string value;            // the refused value as text
   std::string message() const;  // e.g. "alpha (--alpha) is nan, valid: (0, 1]"
 };
 // The first setting outside its range, or nothing.

@@ -122,8 +122,12 @@ struct MotionConvention {
 // What the denoiser multiplies a vector in convention `c` by, per axis, to get ours() (pixels,
 // previous minus current, y down) on a width x height image; the GPU applies the same factors.
 inline std::array<float, 2> motion_scale(const MotionConvention& c, std::uint32_t width, std::uint32_t height) {
-  const float unit_x = c.units == MotionUnits::Pixels ? 1.0f : c.units == MotionUnits::Uv ? float(width) : 0.5f * float(width);
-  const float unit_y = c.units == MotionUnits::Pixels ? 1.0f : c.units == MotionUnits::Uv ? float(height) : 0.5f * float(height);
+  const float unit_x = c.units == MotionUnits::Pixels ? 1.0f
+                       : c.units == MotionUnits::Uv   ? float(width)
+                                                      : 0.5f * float(width);
+  const float unit_y = c.units == MotionUnits::Pixels ? 1.0f
+                       : c.units == MotionUnits::Uv   ? float(height)
+                                                      : 0.5f * float(height);
   const float sign = c.previous_minus_current ? 1.0f : -1.0f;
   return {sign * unit_x, sign * (c.y_up ? -unit_y : unit_y)};
 }

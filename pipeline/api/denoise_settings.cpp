@@ -22,17 +22,26 @@ std::string text(float v) {
   return s.str();
 }
 
-bool in_open_closed(float v, float lo, float hi) { return v > lo && v <= hi; }  // false for NaN
-bool in_closed(float v, float lo, float hi) { return v >= lo && v <= hi; }
-bool positive_finite(float v) { return v > 0.0f && std::isfinite(v); }
-bool non_negative_finite(float v) { return v >= 0.0f && std::isfinite(v); }
+bool in_open_closed(float v, float lo, float hi) {
+  return v > lo && v <= hi;
+}  // false for NaN
+bool in_closed(float v, float lo, float hi) {
+  return v >= lo && v <= hi;
+}
+bool positive_finite(float v) {
+  return v > 0.0f && std::isfinite(v);
+}
+bool non_negative_finite(float v) {
+  return v >= 0.0f && std::isfinite(v);
+}
 
 // Member name, option, range text, test and printed value for each setting. The ranges are what
 // the shaders are written for: iteration counts bound loops and history images, sigmas divide
 // (0 or infinity gives NaN weights), blend factors outside (0, 1] grow or freeze the histories.
 const std::vector<Rule>& rules() {
   static const std::vector<Rule> all = {
-      {{"alpha", "--alpha", "(0, 1]"}, [](const auto& s) { return in_open_closed(s.alpha, 0, 1); },
+      {{"alpha", "--alpha", "(0, 1]"},
+       [](const auto& s) { return in_open_closed(s.alpha, 0, 1); },
        [](const auto& s) { return text(s.alpha); }},
       {{"moments_alpha", "--moments-alpha", "(0, 1]"},
        [](const auto& s) { return in_open_closed(s.moments_alpha, 0, 1); },
@@ -40,11 +49,14 @@ const std::vector<Rule>& rules() {
       {{"atrous_iterations", "--atrous-iterations", "0..16"},
        [](const auto& s) { return s.atrous_iterations >= 0 && s.atrous_iterations <= 16; },
        [](const auto& s) { return std::to_string(s.atrous_iterations); }},
-      {{"sigma_z", "--sigma-z", "(0, inf), finite"}, [](const auto& s) { return positive_finite(s.sigma_z); },
+      {{"sigma_z", "--sigma-z", "(0, inf), finite"},
+       [](const auto& s) { return positive_finite(s.sigma_z); },
        [](const auto& s) { return text(s.sigma_z); }},
-      {{"sigma_n", "--sigma-n", "[0, inf), finite"}, [](const auto& s) { return non_negative_finite(s.sigma_n); },
+      {{"sigma_n", "--sigma-n", "[0, inf), finite"},
+       [](const auto& s) { return non_negative_finite(s.sigma_n); },
        [](const auto& s) { return text(s.sigma_n); }},
-      {{"sigma_l", "--sigma-l", "(0, inf), finite"}, [](const auto& s) { return positive_finite(s.sigma_l); },
+      {{"sigma_l", "--sigma-l", "(0, inf), finite"},
+       [](const auto& s) { return positive_finite(s.sigma_l); },
        [](const auto& s) { return text(s.sigma_l); }},
       {{"kernel", "--kernel", "b3spline or box"},
        [](const auto& s) { return s.kernel == AtrousKernel::B3Spline || s.kernel == AtrousKernel::Box; },
@@ -52,7 +64,8 @@ const std::vector<Rule>& rules() {
       {{"gradient_iterations", "--gradient-iterations", "0..8"},
        [](const auto& s) { return s.gradient_iterations >= 0 && s.gradient_iterations <= 8; },
        [](const auto& s) { return std::to_string(s.gradient_iterations); }},
-      {{"history_cap", "--history-cap", "[1, 4096]"}, [](const auto& s) { return in_closed(s.history_cap, 1, 4096); },
+      {{"history_cap", "--history-cap", "[1, 4096]"},
+       [](const auto& s) { return in_closed(s.history_cap, 1, 4096); },
        [](const auto& s) { return text(s.history_cap); }},
       {{"history_tap", "--history-tap", "0..atrous_iterations-1 (0 without a-trous iterations)"},
        [](const auto& s) { return s.history_tap >= 0 && s.history_tap < std::max(1, s.atrous_iterations); },
@@ -62,9 +75,11 @@ const std::vector<Rule>& rules() {
          return s.gradient_source == GradientSource::Reshaded || s.gradient_source == GradientSource::Reprojected;
        },
        [](const auto& s) { return std::to_string(static_cast<std::uint32_t>(s.gradient_source)); }},
-      {{"min_history", "", "[0, 4096]"}, [](const auto& s) { return in_closed(s.min_history, 0, 4096); },
+      {{"min_history", "", "[0, 4096]"},
+       [](const auto& s) { return in_closed(s.min_history, 0, 4096); },
        [](const auto& s) { return text(s.min_history); }},
-      {{"exposure", "", "[0, inf), finite"}, [](const auto& s) { return non_negative_finite(s.exposure); },
+      {{"exposure", "", "[0, inf), finite"},
+       [](const auto& s) { return non_negative_finite(s.exposure); },
        [](const auto& s) { return text(s.exposure); }},
       {{"tonemap", "", "clamp or aces"},
        [](const auto& s) { return s.tonemap == Tonemap::Clamp || s.tonemap == Tonemap::Aces; },

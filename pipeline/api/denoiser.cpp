@@ -177,8 +177,7 @@ void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, cons
   if (impl_->config.validate) {
     const ResourceId counts =
         g.import_buffer("input_counts", impl_->input_counts, impl_->input_counts_state, passes::kInputCounts * 4);
-    passes::add_validate_inputs(g, impl_->pipelines,
-                                {color, albedo_in, normal, depth, motion, depth_normal, counts});
+    passes::add_validate_inputs(g, impl_->pipelines, {color, albedo_in, normal, depth, motion, depth_normal, counts});
     g.output(counts, hal::State::CopySrc);
     impl_->input_counts_state = hal::State::CopySrc;
   }

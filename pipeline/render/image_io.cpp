@@ -69,7 +69,8 @@ std::vector<std::byte> encode_exr(const std::filesystem::path& path, std::uint32
     if (err) FreeEXRErrorMessage(err);
     throw ImageIoError(path.string() + ": cannot encode EXR: " + message);
   }
-  std::vector<std::byte> bytes(reinterpret_cast<const std::byte*>(memory), reinterpret_cast<const std::byte*>(memory) + size);
+  std::vector<std::byte> bytes(reinterpret_cast<const std::byte*>(memory),
+                               reinterpret_cast<const std::byte*>(memory) + size);
   std::free(memory);
   return bytes;
 }
@@ -155,8 +156,7 @@ ExrImage read_exr(const std::filesystem::path& path, std::span<const std::string
     if (header.pixel_types[i] == TINYEXR_PIXELTYPE_UINT) unsupported = channel;
     header.requested_pixel_types[i] = TINYEXR_PIXELTYPE_FLOAT;
     for (std::size_t c = 0; c < 4; ++c)
-      if (slots.empty() ? channel == std::string(1, "RGBA"[c]) : c < slots.size() && channel == slots[c])
-        index[c] = i;
+      if (slots.empty() ? channel == std::string(1, "RGBA"[c]) : c < slots.size() && channel == slots[c]) index[c] = i;
   }
   if (!slots.empty()) {
     // Named channels (a multilayer file's "Layer.Pass.Channel"): every one must be there.

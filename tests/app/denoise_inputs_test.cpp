@@ -149,8 +149,9 @@ TEST_CASE("denoise inputs: the motion check accepts the convention and names the
   const auto neg = cli::check_motion(negated.previous_depth, negated.depth, negated.motion, 48, 16);
   REQUIRE(neg.problem);
   CHECK(neg.best.convention == "negated");
-  CHECK(neg.problem->find("Read them with --motion-sign current-minus-previous --motion-units pixels --motion-y down") !=
-        std::string::npos);
+  CHECK(
+      neg.problem->find("Read them with --motion-sign current-minus-previous --motion-units pixels --motion-y down") !=
+      std::string::npos);
 
   const Frames uv = sliding(6, 1.0f / 48.0f, 0.0f);
   const auto in_uv = cli::check_motion(uv.previous_depth, uv.depth, uv.motion, 48, 16);
@@ -162,7 +163,9 @@ TEST_CASE("denoise inputs: the motion check accepts the convention and names the
   Frames diagonal;
   for (auto* v : {&diagonal.previous_depth, &diagonal.depth, &diagonal.motion})
     v->assign(std::size_t(diagonal.w) * diagonal.h * 4, 0.0f);
-  auto zxy = [](int x, int y) { return 1.0f + static_cast<float>((((x / 4) % 5 + 5) % 5) + 5 * (((y / 2) % 4 + 4) % 4)); };
+  auto zxy = [](int x, int y) {
+    return 1.0f + static_cast<float>((((x / 4) % 5 + 5) % 5) + 5 * (((y / 2) % 4 + 4) % 4));
+  };
   for (int y = 0; y < diagonal.h; ++y)
     for (int x = 0; x < diagonal.w; ++x) {
       const std::size_t i = (std::size_t(y) * diagonal.w + x) * 4;

@@ -12,7 +12,6 @@
 #include <doctest/doctest.h>
 
 #include "asvgf/denoiser.hpp"
-#include "pipeline/denoise_harness.hpp"
 #include "passes/atrous.hpp"
 #include "passes/composite.hpp"
 #include "passes/convert_inputs.hpp"
@@ -21,6 +20,7 @@
 #include "passes/pack_surface.hpp"
 #include "passes/temporal.hpp"
 #include "passes/variance.hpp"
+#include "pipeline/denoise_harness.hpp"
 #include "reference/denoise_reference.hpp"
 #include "vulkan/validated_device.hpp"
 
@@ -44,7 +44,8 @@ auto fp32_tolerance(double magnitude) {
 
 }  // namespace
 
-TEST_CASE("denoise passes: convert_inputs demodulates radiance where the albedo allows and converts motion conventions") {
+TEST_CASE(
+    "denoise passes: convert_inputs demodulates radiance where the albedo allows and converts motion conventions") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -74,7 +75,8 @@ TEST_CASE("denoise passes: convert_inputs demodulates radiance where the albedo 
       albedo.at(0, 0, 0) = nan;   // no albedo: the radiance passes through
       albedo.at(1, 0, 1) = -0.5;  // likewise
       albedo.at(2, 0, 2) = 0.0;
-      const auto scale = asvgf::motion_scale(k.convention, static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h));
+      const auto scale =
+          asvgf::motion_scale(k.convention, static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h));
       GraphHarness harness(*device);
       RenderGraph g;
       const auto cin = harness.input(g, "color", color, F::RGBA32F);
@@ -84,7 +86,8 @@ TEST_CASE("denoise passes: convert_inputs demodulates radiance where the albedo 
       const auto illum = g.add_image("illumination", uw, uh, F::RGBA32F);
       const auto modulation = g.add_image("modulation", uw, uh, F::RGBA16F);
       const auto mout = g.add_image("motion_out", uw, uh, F::RGBA32F);
-      passes::add_convert_inputs(g, pipelines, {cin, ain, min, illum, modulation, mout}, {k.radiance, scale[0], scale[1]});
+      passes::add_convert_inputs(g, pipelines, {cin, ain, min, illum, modulation, mout},
+                                 {k.radiance, scale[0], scale[1]});
       ImageD got_i, got_m, got_v;
       harness.readback(g, illum, &got_i);
       harness.readback(g, modulation, &got_m);

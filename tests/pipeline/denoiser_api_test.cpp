@@ -198,13 +198,14 @@ TEST_CASE("denoiser API: radiance in equals the same frames given demodulated, a
       if (i % 4 < 3 && in.albedo[i] < 1e-3f) in.albedo[i] = 1.0f;
     return in;
   };
-  const auto want = denoise_frames({.width = kW, .height = kH, .method = asvgf::DenoiseMethod::Svgf,
-                                    .color_input = asvgf::ColorInput::Demodulated},
-                                   4, [&](int f) { return unit_albedo_where_none(f); });
+  const auto want = denoise_frames(
+      {.width = kW, .height = kH, .method = asvgf::DenoiseMethod::Svgf, .color_input = asvgf::ColorInput::Demodulated},
+      4, [&](int f) { return unit_albedo_where_none(f); });
   const auto got = denoise_frames({.width = kW, .height = kH, .method = asvgf::DenoiseMethod::Svgf}, 4, radiance);
   double worst = 0;
   for (std::size_t i = 0; i < want.size(); ++i)
-    if (i % 4 < 3) worst = std::max(worst, std::abs(double(got[i]) - want[i]) / std::max(1.0, std::abs(double(want[i]))));
+    if (i % 4 < 3)
+      worst = std::max(worst, std::abs(double(got[i]) - want[i]) / std::max(1.0, std::abs(double(want[i]))));
   MESSAGE("worst relative difference " << worst);
   // radiance * albedo / albedo is the illumination to an fp32 ulp or two; through the chain that can
   // flip an fp16 rounding of a history or filter store (2^-11 relative, measured 5.1e-4): four fp16
@@ -229,8 +230,8 @@ TEST_CASE("denoiser API: motion in Cycles' and NRD's conventions gives the frame
     for (std::size_t i = 0; i < in.motion.size(); i += 4) in.motion[i] /= float(kW), in.motion[i + 1] /= float(kH);
     return in;
   };
-  const asvgf::DenoiserConfig base{.width = kW, .height = kH, .method = asvgf::DenoiseMethod::Svgf,
-                                   .color_input = asvgf::ColorInput::Demodulated};
+  const asvgf::DenoiserConfig base{
+      .width = kW, .height = kH, .method = asvgf::DenoiseMethod::Svgf, .color_input = asvgf::ColorInput::Demodulated};
   auto with = [&](asvgf::MotionConvention m) {
     auto c = base;
     c.motion = m;

@@ -51,7 +51,8 @@ TEST_CASE("denoiser settings: the defaults and every range's ends pass the check
   }
 }
 
-TEST_CASE("denoiser settings: NaN, infinities and out-of-range values are refused naming the setting, option and range") {
+TEST_CASE(
+    "denoiser settings: NaN, infinities and out-of-range values are refused naming the setting, option and range") {
   const Case bad[] = {
       {"alpha", [](auto& s) { s.alpha = kNan; }},
       {"alpha", [](auto& s) { s.alpha = 0.0f; }},
