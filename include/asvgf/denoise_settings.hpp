@@ -1,7 +1,7 @@
 // asvgf/denoise_settings.hpp: the denoiser's parameters with their defaults and sources (public:
 // asvgf::Denoiser takes them, and so do the frame, the tests and the command line).
 //
-// Defaults (sources; the numbers are in ../shared/DESIGN.md "Numbers from the anchors"):
+// Defaults and their sources (the papers and implementations named; README "Denoiser parameters"):
 //   alpha 0.2, moments_alpha 0.2, atrous_iterations 5, sigma_z 1, sigma_n 128, sigma_l 4, B3-spline
 //   kernel, history_tap 0, min_history 4: SVGF paper (Schied et al. 2017) and Falcor's SVGF pass.
 //   gradient_iterations 3: Q2RTX (a-trous over the gradient at 1/3 resolution).
