@@ -100,6 +100,7 @@ int run_denoise(DenoiseOptions& o) {
   // luminance, and says so; --gradient-source reshaded without samples is refused (constant alpha
   // is --method svgf).
   std::string gradient_note;
+  bool gradient_chosen = false;  // the reprojected gradient chosen for the user: said even with --quiet
   if (o.method == "asvgf" && gradient.empty() && o.device.gradient_source == "reshaded") {
     if (o.gradient_source_option && o.gradient_source_option->count() > 0)
       throw CLI::ValidationError("--gradient-source",
@@ -109,6 +110,7 @@ int run_denoise(DenoiseOptions& o) {
     o.device.gradient_source = "reprojected";
     o.device.denoise.gradient_source = GradientSource::Reprojected;
     gradient_note = "reprojected (no gradient samples given)";
+    gradient_chosen = true;
   } else if (o.method == "asvgf") {
     gradient_note = o.device.gradient_source == "reprojected" ? "reprojected" : "reshaded samples";
   }
@@ -126,11 +128,10 @@ int run_denoise(DenoiseOptions& o) {
                                std::to_string(o.first + available) + "): missing; --frames asks for " +
                                std::to_string(frames));
 
-  const bool own_folder = o.color_from_folder;
   const std::string cycles_layer = o.conventions.from == "cycles"
                                        ? cycles_layer_of(render::read_exr_channel_names(color.path(o.first)))
                                        : std::string();
-  const InputConventions conventions = resolve_input_conventions(o.conventions, own_folder, cycles_layer);
+  const InputConventions conventions = resolve_input_conventions(o.conventions, o.color_from_folder, cycles_layer);
   auto channels_of = [&](const char* buffer) {
     const auto it = conventions.channels.find(buffer);
     return it == conventions.channels.end() ? std::vector<std::string>{} : it->second;
@@ -199,8 +200,8 @@ int run_denoise(DenoiseOptions& o) {
     std::fprintf(stderr, "asvgf denoise: %d frames of %ux%u from %s (%s), %s%s%s on %s\n", frames, w, h,
                  o.color.c_str(), conventions.describe().c_str(), o.method.c_str(),
                  gradient_note.empty() ? "" : ", gradient: ", gradient_note.c_str(), device->adapter().name.c_str());
-  else if (gradient_note.find("no gradient samples") != std::string::npos)
-    std::fprintf(stderr, "asvgf denoise: asvgf's gradient: %s\n", gradient_note.c_str());  // a choice made for you
+  else if (gradient_chosen)
+    std::fprintf(stderr, "asvgf denoise: asvgf's gradient: %s\n", gradient_note.c_str());
 
   std::ostringstream csv;
   csv << "frame,method,relmse,ssim,gpu_ms,gradient\n";
