@@ -42,13 +42,14 @@ struct DenoiseOptions {
 
 // --input DIR fills every pattern not given explicitly with DIR/<buffer>_%04d.exr (the gradient
 // only for asvgf, and only when DIR has one for the first frame) and reads the depth gradient.
-// With --from cycles, --input is the multilayer files' pattern and fills every buffer's.
+// With --from cycles or pbrt, --input is the files' pattern (one file a frame holds every buffer)
+// and fills every buffer's (pbrt's files hold no motion).
 void apply_input_folder(DenoiseOptions& o) {
   if (o.input.empty()) return;
-  if (o.conventions.from == "cycles") {
-    // --input is the pattern of Blender's multilayer files: one file a frame holds every buffer.
-    for (std::string* pattern : {&o.color, &o.albedo, &o.normal, &o.depth, &o.motion})
+  if (!o.conventions.from.empty()) {
+    for (std::string* pattern : {&o.color, &o.albedo, &o.normal, &o.depth})
       if (pattern->empty()) *pattern = o.input;
+    if (o.conventions.from == "cycles" && o.motion.empty()) o.motion = o.input;
     return;
   }
   const std::filesystem::path dir(o.input);
@@ -81,19 +82,22 @@ int run_denoise(DenoiseOptions& o) {
   o.device.size = "1x1";  // the frames set the size
   finish_scene_options(o.device);
   apply_input_folder(o);
+  const bool still = still_sequence(o.conventions, !o.motion.empty());
   for (const auto& [name, value] : {std::pair{"--color", &o.color},
                                     {"--albedo", &o.albedo},
                                     {"--normal", &o.normal},
                                     {"--depth", &o.depth},
                                     {"--motion", &o.motion}})
-    if (value->empty()) throw CLI::ValidationError(name, "is required (or --input DIR from asvgf render --aovs)");
+    if (value->empty() && !(still && value == &o.motion))
+      throw CLI::ValidationError(name, std::string("is required (or --input DIR from asvgf render --aovs") +
+                                           (value == &o.motion ? "; --still when nothing moves)" : ")"));
   if (!o.gradient.empty() && o.method != "asvgf")
     throw CLI::ValidationError("--gradient", "gradient samples are for --method asvgf only");
   if (!o.gradient.empty() && o.device.gradient_source == "reprojected")
     throw CLI::ValidationError("--gradient", "--gradient-source reprojected estimates the gradient itself");
 
   const FramePattern color("--color", o.color), albedo("--albedo", o.albedo), normal("--normal", o.normal),
-      depth("--depth", o.depth), motion("--motion", o.motion);
+      depth("--depth", o.depth), motion = still ? FramePattern() : FramePattern("--motion", o.motion);
   const FramePattern gradient = o.gradient.empty() ? FramePattern() : FramePattern("--gradient", o.gradient);
   const FramePattern reference = o.reference.empty() ? FramePattern() : FramePattern("--reference", o.reference);
   // asvgf needs a temporal gradient: without re-shaded samples it estimates one from reprojected
@@ -131,7 +135,8 @@ int run_denoise(DenoiseOptions& o) {
   const std::string cycles_layer = o.conventions.from == "cycles"
                                        ? cycles_layer_of(render::read_exr_channel_names(color.path(o.first)))
                                        : std::string();
-  const InputConventions conventions = resolve_input_conventions(o.conventions, o.color_from_folder, cycles_layer);
+  const InputConventions conventions =
+      resolve_input_conventions(o.conventions, o.color_from_folder, cycles_layer, !o.motion.empty());
   auto channels_of = [&](const char* buffer) {
     const auto it = conventions.channels.find(buffer);
     return it == conventions.channels.end() ? std::vector<std::string>{} : it->second;
@@ -177,6 +182,11 @@ int run_denoise(DenoiseOptions& o) {
       {&motion, {"motion", w, h, {"R", "G"}, false, channels_of("motion")}, {}},
   };
   for (auto& in : inputs) in.image = create(in.spec.name.c_str(), w, h, F32);
+  constexpr std::size_t kMotion = 4;
+  if (still) {  // one upload of zeros serves every frame
+    const std::vector<float> zeros(std::size_t(w) * h * 4);
+    device->upload_image(inputs[kMotion].image, std::as_bytes(std::span(zeros)));
+  }
   const hal::ImageHandle gradient_image = gradient.empty() ? hal::ImageHandle{} : create("gradient", gw, gh, F32);
   const hal::ImageHandle radiance = create("radiance", w, h, F32);
   const hal::ImageHandle display = create("display", w, h, hal::Format::RGBA8Unorm);
@@ -213,6 +223,10 @@ int run_denoise(DenoiseOptions& o) {
     const int f = o.first + i;
     std::vector<render::ExrImage> images;
     for (auto& in : inputs) {
+      if (in.pattern->empty()) {  // still: the zeros uploaded once
+        images.emplace_back();
+        continue;
+      }
       images.push_back(read_frame(*in.pattern, f, in.spec));
       device->upload_image(in.image, std::as_bytes(std::span(images.back().rgba)));
     }
@@ -222,10 +236,10 @@ int run_denoise(DenoiseOptions& o) {
           check_color_kind(images[0].rgba, images[1].rgba, depth_now.rgba, conventions.color == ColorInput::Radiance);
       if (kind.problem) std::fprintf(stderr, "%sframe %d: %s\n", o.quiet ? "" : "\n", f, kind.problem->c_str());
     }
-    if (i > 0 && o.motion_check) {
+    if (i > 0 && o.motion_check && !still) {
       // Judged in the denoiser's convention, as the GPU converts them (asvgf::motion_scale).
       const auto scale = motion_scale(conventions.motion, w, h);
-      std::vector<float> pixels = images[4].rgba;
+      std::vector<float> pixels = images[kMotion].rgba;
       for (std::size_t k = 0; k < pixels.size(); k += 4) pixels[k] *= scale[0], pixels[k + 1] *= scale[1];
       const MotionCheck check = check_motion(previous_depth, depth_now.rgba, pixels, w, h, conventions.motion);
       if (check.problem)
@@ -248,7 +262,7 @@ int run_denoise(DenoiseOptions& o) {
          {inputs[1].image, F32, uploaded},
          {inputs[2].image, F32, uploaded},
          {inputs[3].image, F32, uploaded},
-         {inputs[4].image, F32, uploaded},
+         {inputs[kMotion].image, F32, still && i > 0 ? hal::State::ShaderRead : uploaded},
          samples},
         {{radiance, F32, after}, DenoiserImage{display, hal::Format::RGBA8Unorm, after}, hal::State::CopySrc});
     device->read_image(radiance, std::as_writable_bytes(std::span(hdr)));
@@ -305,7 +319,7 @@ std::function<int()> add_denoise_command(CLI::App& app) {
   cmd->add_option(
       "--input", o->input,
       "Folder written by asvgf render --aovs (reads its {color,albedo,normal,depth,motion,gradient}_NNNN.exr, "
-      "colour demodulated); with --from cycles the pattern of Blender's multilayer files");
+      "colour demodulated); with --from cycles or pbrt the pattern of the renderer's files (one a frame)");
   cmd->add_option("--color", o->color,
                   "Noisy radiance (RGB; --demodulated: divided by the albedo), e.g. frames/color_%04d.exr");
   cmd->add_option("--albedo", o->albedo, "Albedo (RGB): the denoiser divides the radiance by it and multiplies back");

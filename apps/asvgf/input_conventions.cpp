@@ -27,14 +27,19 @@ const char* units_name(MotionUnits u) {
 void add_input_convention_options(CLI::App& cmd, InputConventionOptions& o) {
   cmd.add_option("--from", o.from,
                  "Read another renderer's output as it writes it: cycles (Blender's multilayer EXR, one file a frame "
-                 "holding every pass; --input is then its file pattern, e.g. 'frames/%04d.exr')")
-      ->check(CLI::IsMember({"cycles"}));
+                 "holding every pass; --input is then its file pattern, e.g. 'frames/%04d.exr'), pbrt (pbrt-v4's "
+                 "\"gbuffer\" film with \"coordinatesystem\" \"camera\": one EXR a frame; it writes no motion "
+                 "vectors, so the sequence must hold still unless --motion is given)")
+      ->check(CLI::IsMember({"cycles", "pbrt"}));
   cmd.add_option("--channels", o.channels,
                  "BUFFER=C1,C2,...: the file channels holding a buffer (color, albedo, normal, depth, motion, "
                  "reference), e.g. 'normal=View Layer.Normal.X,View Layer.Normal.Y,View Layer.Normal.Z' (repeatable)");
   cmd.add_flag("--demodulated", o.demodulated,
                "--color holds radiance already divided by the albedo (default: radiance; asvgf render --aovs "
                "folders are read as demodulated)");
+  cmd.add_flag("--still", o.still,
+               "Nothing moves (camera and scene): no --motion files, every motion vector is 0 (implied by --from "
+               "pbrt without --motion)");
   cmd.add_option("--motion-convention", o.motion_preset,
                  "Motion vectors as written by: ours (previous minus current, pixels, y down), cycles (y up), nrd "
                  "(previous minus current in UV units)")
@@ -56,9 +61,15 @@ std::string cycles_layer_of(const std::vector<std::string>& channels) {
   return "";
 }
 
+bool still_sequence(const InputConventionOptions& o, bool motion_given) {
+  if (o.still && motion_given) throw CLI::ValidationError("--still", "says nothing moves: leave out --motion");
+  return o.still || (o.from == "pbrt" && !motion_given);
+}
+
 InputConventions resolve_input_conventions(const InputConventionOptions& o, bool own_folder,
-                                           const std::string& cycles_layer) {
+                                           const std::string& cycles_layer, bool motion_given) {
   InputConventions c;
+  c.still = still_sequence(o, motion_given);
   if (o.from == "cycles") {
     if (cycles_layer.empty())
       throw CLI::ValidationError("--from",
@@ -76,6 +87,16 @@ InputConventions resolve_input_conventions(const InputConventionOptions& o, bool
     c.channels["depth"] = pass("Depth", "Z");
     c.channels["motion"] = pass("Vector", "XY");
     c.motion = MotionConvention::cycles();
+  }
+  if (o.from == "pbrt") {
+    // pbrt-v4's GBufferFilm (src/pbrt/film.cpp): R, G, B radiance, Albedo.R/G/B, the shading normal
+    // Nsx/Nsy/Nsz, the position Px/Py/Pz (camera space with "coordinatesystem" "camera": pbrt's
+    // camera looks down +z, so Pz is the view depth; 0 where no surface was hit, our background).
+    c.channels["color"] = {"R", "G", "B"};
+    c.channels["reference"] = {"R", "G", "B"};
+    c.channels["albedo"] = {"Albedo.R", "Albedo.G", "Albedo.B"};
+    c.channels["normal"] = {"Nsx", "Nsy", "Nsz"};
+    c.channels["depth"] = {"Pz"};
   }
   for (const auto& entry : o.channels) {
     const auto eq = entry.find('=');
@@ -110,6 +131,7 @@ std::string motion_options(const MotionConvention& m) {
 }
 
 std::string InputConventions::describe() const {
+  if (still) return std::string(color == ColorInput::Radiance ? "radiance" : "demodulated colour") + ", still (no motion)";
   return std::string(color == ColorInput::Radiance ? "radiance" : "demodulated colour") + ", motion " +
          (motion.previous_minus_current ? "previous minus current" : "current minus previous") + " in " +
          units_name(motion.units) + ", y " + (motion.y_up ? "up" : "down");
