@@ -28,6 +28,9 @@ for t in "${targets[@]}"; do
       "build-fuzz/fuzz_$t" -max_total_time="$seconds" -seed="${ASVGF_FUZZ_SEED:-0}" -timeout=10 -rss_limit_mb=2048 \
       -artifact_prefix="$findings/" -print_final_stats=1 "$corpus" 2>"build-fuzz/$t.log"; then
     echo "fuzz: $t FOUND a problem: see build-fuzz/$t.log and $findings/" >&2
+    # What it found, in CI's log too: the sanitizer's report head, the artifact and its bytes (Base64).
+    grep -E "^==[0-9]+==|SUMMARY|deadly signal|timeout|out-of-memory|leak|Test unit written|^Base64:" "build-fuzz/$t.log" |
+      head -n 30 | sed "s/^/fuzz: $t: /" >&2 || true
     status=1
   fi
   grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "build-fuzz/$t.log" | sed "s/^/fuzz: $t: /" || true

@@ -1,5 +1,7 @@
-// scene/image.cpp: albedo textures from image files (and glTF's images) through stb_image, after
-// checks for the malformed files that Debian's stb_image 2.27 mishandles.
+// scene/image.cpp: albedo textures from PNG and JPEG files (and glTF's images, which are PNG or
+// JPEG by the glTF spec) through stb_image, after checks for the malformed files that Debian's
+// stb_image 2.27 mishandles. Its other decoders (TGA, BMP, PSD, GIF, HDR, PIC, PNM) are left out:
+// the fuzzer kept finding faults in them, and no scene needs them.
 //
 // libtinygltf.so links Debian's libstb.so, which exports the stb_image symbols; STB_IMAGE_STATIC
 // keeps this implementation private to this file so the two never clash.
@@ -23,6 +25,8 @@
 #pragma GCC diagnostic ignored "-Wunused-function"
 #pragma GCC diagnostic ignored "-Wimplicit-fallthrough"
 #define STB_IMAGE_STATIC
+#define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
 #define STB_IMAGE_IMPLEMENTATION
 #include <stb/stb_image.h>
 #pragma GCC diagnostic pop
@@ -38,6 +42,18 @@ constexpr int kMaxTextureSide = 16384;
 // for flat JPEGs; only flat 1- and 2-bit PNGs go further.
 constexpr std::uint64_t kMaxPixelsPerByte = 2048;
 
+constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+
+bool is_png(std::span<const unsigned char> bytes) {
+  return bytes.size() >= 8 && std::memcmp(bytes.data(), kPngSignature, 8) == 0;
+}
+// A JPEG's start marker as stb_image finds it: 0xFF, any number of 0xFF fill bytes, 0xD8.
+bool is_jpeg(std::span<const unsigned char> bytes) {
+  std::size_t at = 1;
+  while (at < bytes.size() && bytes[at] == 0xFF) ++at;
+  return !bytes.empty() && bytes[0] == 0xFF && at < bytes.size() && bytes[at] == 0xD8;
+}
+
 std::uint32_t big_endian32(const unsigned char* p) {
   return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) | std::uint32_t{p[3]};
 }
@@ -46,8 +62,7 @@ std::uint32_t big_endian32(const unsigned char* p) {
 // asked for 2 GiB (found by tools/fuzz.sh, tests/data/fuzz_regressions/image/). Every chunk must fit
 // in the file.
 void check_png_chunks(std::span<const unsigned char> bytes, const std::string& prefix) {
-  static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (bytes.size() < 8 || std::memcmp(bytes.data(), kSignature, 8) != 0) return;  // not a PNG
+  if (!is_png(bytes)) return;
   std::size_t at = 8;
   while (at + 12 <= bytes.size()) {
     const std::uint64_t length = big_endian32(&bytes[at]);
@@ -66,10 +81,9 @@ void check_png_chunks(std::span<const unsigned char> bytes, const std::string& p
 // bytes skipped, 0xFF00 stuffing and restart markers inside scans) and refuse both. stb_image reads
 // a table's counts even past the segment's end (as zeros past the file's), so this does too.
 void check_jpeg_huffman_tables(std::span<const unsigned char> bytes, const std::string& prefix) {
-  // SOI as stb_image finds it: 0xFF, any number of 0xFF fill bytes, 0xD8.
+  if (!is_jpeg(bytes)) return;
   std::size_t at = 1;
-  while (at < bytes.size() && bytes[at] == 0xFF) ++at;
-  if (bytes.empty() || bytes[0] != 0xFF || at >= bytes.size() || bytes[at] != 0xD8) return;  // not a JPEG
+  while (bytes[at] == 0xFF) ++at;  // to the 0xD8 is_jpeg found
   ++at;
   auto byte_at = [&](std::size_t i) -> unsigned { return i < bytes.size() ? bytes[i] : 0u; };  // 0 past the end, as stb
   bool defined[2][4] = {};  // [0: DC, 1: AC][table id]
@@ -126,6 +140,8 @@ void check_jpeg_huffman_tables(std::span<const unsigned char> bytes, const std::
 Texture decode_image(const unsigned char* data, std::size_t size, const std::string& prefix) {
   if (size == 0) throw SceneError(prefix + "cannot read image (no data)");
   const std::span<const unsigned char> bytes(data, size);  // checked in place, not copied
+  if (!is_png(bytes) && !is_jpeg(bytes))
+    throw SceneError(prefix + "not a PNG or JPEG file (textures are PNG or JPEG, as glTF's are)");
   check_png_chunks(bytes, prefix);
   check_jpeg_huffman_tables(bytes, prefix);
   const int stb_size = static_cast<int>(std::min<std::size_t>(size, std::numeric_limits<int>::max()));
