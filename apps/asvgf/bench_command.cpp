@@ -11,7 +11,7 @@
 
 #include "commands.hpp"
 #include "copy_bandwidth.hpp"
-#include "graph/pass_traffic.hpp"
+#include "denoiser/graph/pass_traffic.hpp"
 #include "report/sequence_metrics.hpp"
 #include "scene_options.hpp"
 

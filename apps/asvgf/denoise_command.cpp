@@ -15,8 +15,8 @@
 #include "input_conventions.hpp"
 #include "motion_check.hpp"
 #include "progress.hpp"
-#include "render/image_io.hpp"
-#include "render/metrics.hpp"
+#include "io/image_io.hpp"
+#include "report/metrics.hpp"
 #include "scene_options.hpp"
 
 namespace asvgf::cli {

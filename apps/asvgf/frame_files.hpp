@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "render/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 namespace asvgf::cli {
 
@@ -18,7 +18,7 @@ inline std::string frame_file(const char* prefix, int frame, const char* ext) {
   return name;
 }
 
-// DIR/metrics.csv, whole or not at all (render/atomic_file.hpp).
+// DIR/metrics.csv, whole or not at all (io/atomic_file.hpp).
 inline void write_metrics_csv(const std::filesystem::path& dir, const std::string& csv) {
   render::write_file_atomic(dir / "metrics.csv", csv);
 }

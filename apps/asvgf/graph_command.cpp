@@ -8,13 +8,13 @@
 #include <string>
 
 #include "commands.hpp"
-#include "frame/frame_graph.hpp"
-#include "graph/graph_runtime.hpp"
+#include "renderer/frame_graph.hpp"
+#include "denoiser/graph/graph_runtime.hpp"
 #include "hal/validate.hpp"
 #include "hal_record/record_device.hpp"
-#include "render/atomic_file.hpp"
-#include "render/scene_gpu.hpp"
-#include "scene/builtin.hpp"
+#include "io/atomic_file.hpp"
+#include "renderer/scene_gpu.hpp"
+#include "renderer/scene/builtin.hpp"
 #include "scene_options.hpp"
 
 namespace asvgf::cli {

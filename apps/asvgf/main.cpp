@@ -8,7 +8,7 @@
 
 #include "commands.hpp"
 #include "hal/error.hpp"
-#include "render/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"asvgf: real-time A-SVGF denoising of path-traced frames on a thin HAL (Vulkan, OpenGL and OpenGL ES backends)", "asvgf"};

@@ -9,8 +9,8 @@
 #include "commands.hpp"
 #include "frame_files.hpp"
 #include "progress.hpp"
-#include "render/image_io.hpp"
-#include "render/metrics.hpp"
+#include "io/image_io.hpp"
+#include "report/metrics.hpp"
 #include "scene_options.hpp"
 
 namespace asvgf::cli {

@@ -17,12 +17,12 @@
 #include "commands.hpp"
 #include "frame_files.hpp"
 #include "progress.hpp"
-#include "render/atomic_file.hpp"
-#include "render/metrics.hpp"
+#include "io/atomic_file.hpp"
+#include "report/metrics.hpp"
 #include "report/report.hpp"
 #include "report/summary.hpp"
-#include "scene/builtin.hpp"
-#include "scene/scene.hpp"
+#include "renderer/scene/builtin.hpp"
+#include "renderer/scene/scene.hpp"
 #include "scene_options.hpp"
 
 namespace asvgf::cli {

@@ -10,8 +10,8 @@
 #include "hal/validate.hpp"
 #include "hal_gl/gl.hpp"
 #include "hal_vulkan/vulkan.hpp"
-#include "scene/builtin.hpp"
-#include "scene/scene_file.hpp"
+#include "renderer/scene/builtin.hpp"
+#include "renderer/scene/scene_file.hpp"
 
 namespace asvgf::cli {
 

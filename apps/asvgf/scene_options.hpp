@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include "render/renderer.hpp"
-#include "scene/scene.hpp"
+#include "renderer/renderer.hpp"
+#include "renderer/scene/scene.hpp"
 
 namespace asvgf::cli {
 

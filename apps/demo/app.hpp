@@ -18,7 +18,7 @@
 #include "input.hpp"
 #include "interactive_scene.hpp"
 #include "options.hpp"
-#include "render/renderer.hpp"
+#include "renderer/renderer.hpp"
 #include "title.hpp"
 #include "window_presenter.hpp"
 

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "frame/frame_graph.hpp"
+#include "renderer/frame_graph.hpp"
 
 struct GLFWwindow;
 

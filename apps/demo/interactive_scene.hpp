@@ -9,7 +9,7 @@
 
 #include <optional>
 
-#include "scene/scene.hpp"
+#include "renderer/scene/scene.hpp"
 
 namespace asvgf::demo {
 

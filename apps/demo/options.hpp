@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "passes/frame_passes.hpp"
+#include "renderer/render_passes.hpp"
 #include "scene_options.hpp"
 
 namespace asvgf::demo {

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "render/image_io.hpp"
+#include "io/image_io.hpp"
 
 namespace asvgf::demo {
 

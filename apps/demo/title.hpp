@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "graph/graph_runtime.hpp"
+#include "denoiser/graph/graph_runtime.hpp"
 
 namespace asvgf::demo {
 
@@ -15,7 +15,7 @@ struct TitleInfo {
   std::string method, view;
   int atrous_iterations = 0;
   double fps = 0.0;
-  std::vector<graph::PassTiming> timings;
+  std::vector<PassTime> timings;
   bool paused = false;
   std::uint32_t width = 0, height = 0;  // render size
   std::string note;                     // e.g. "accumulating 37 frames"

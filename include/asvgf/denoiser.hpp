@@ -57,6 +57,7 @@
 #include <vector>
 
 #include "asvgf/denoise_settings.hpp"
+#include "asvgf/denoiser_stats.hpp"
 #include "hal/command_list.hpp"
 #include "hal/device.hpp"
 
@@ -177,15 +178,10 @@ class Denoiser {
   // Forgets every history: the next frame starts afresh (as DenoiserInputs::camera_cut).
   void reset();
 
-  struct PassTime {
-    std::string pass;
-    std::optional<double> gpu_ms;  // empty when the device has no timestamps
-  };
+  using PassTime = asvgf::PassTime;
   // GPU time per pass of the last frame; call after the device finished it.
   std::vector<PassTime> timings();
-  struct Sanitised {
-    std::uint32_t nan_samples = 0, inf_samples = 0, clamped_samples = 0, zeroed_outputs = 0;
-  };
+  using Sanitised = SanitisedCounts;
   // Samples dropped (NaN, Inf) or clamped before the histories and output pixels written as 0,
   // since creation; waits for the device.
   Sanitised sanitised();

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "render/image_io.hpp"
+#include "io/image_io.hpp"
 
 // stb_easy_font is a header of static functions; some are unused here and it uses old-style casts.
 #pragma GCC diagnostic push

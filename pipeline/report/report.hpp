@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "frame/frame_graph.hpp"
-#include "passes/denoise_settings.hpp"
+#include "renderer/frame_graph.hpp"
+#include "denoiser/passes/denoise_settings.hpp"
 #include "report/plot.hpp"
 #include "report/sequence_metrics.hpp"
 

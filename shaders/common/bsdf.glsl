@@ -3,7 +3,7 @@
 // height-correlated Smith masking-shadowing (Heitz 2014) and Schlick's Fresnel, over a Lambertian
 // lobe weighted by what the dielectric Fresnel leaves. Sampled by the GGX distribution of visible
 // normals (Heitz 2018, "Sampling the GGX Distribution of Visible Normals", JCGT 7(4)) or the cosine,
-// one lobe chosen per sample, so the pdf is the lobes' mixture. CPU twin: pipeline/reference/bsdf.hpp.
+// one lobe chosen per sample, so the pdf is the lobes' mixture. CPU twin: pipeline/cpu_oracle/bsdf.hpp.
 //
 // Parameters: base colour c, metallic m, roughness r (alpha = r^2), specular s.
 //   F_dielectric(x) = s (0.04 + 0.96 (1 - x)^5)    F_metal(x) = c + (1 - c)(1 - x)^5

@@ -1,5 +1,5 @@
 // common/color.glsl: luminance, sample sanitising and fp16 storage limits shared by the denoiser.
-// The CPU twin is pipeline/reference/denoise_math.hpp; keep the two in step.
+// The CPU twin is pipeline/cpu_oracle/denoise_math.hpp; keep the two in step.
 #ifndef ASVGF_COMMON_COLOR_GLSL
 #define ASVGF_COMMON_COLOR_GLSL
 

@@ -1,6 +1,6 @@
 // common/denoise.glsl: edge-stopping weights and kernels of the denoiser passes (SVGF, Schied et
 // al. 2017, eq. for w_z, w_n, w_l as in the seed document). CPU twin:
-// pipeline/reference/denoise_math.hpp (same constants, same guards).
+// pipeline/cpu_oracle/denoise_math.hpp (same constants, same guards).
 #ifndef ASVGF_COMMON_DENOISE_GLSL
 #define ASVGF_COMMON_DENOISE_GLSL
 

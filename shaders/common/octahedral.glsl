@@ -1,5 +1,5 @@
 // common/octahedral.glsl: unit normals as two floats in [-1,1] (octahedral mapping, Meyer et al.
-// 2010, "On floating-point normal vectors"). CPU twin: pipeline/reference/octahedral.hpp.
+// 2010, "On floating-point normal vectors"). CPU twin: pipeline/cpu_oracle/octahedral.hpp.
 #ifndef ASVGF_COMMON_OCTAHEDRAL_GLSL
 #define ASVGF_COMMON_OCTAHEDRAL_GLSL
 

@@ -1,4 +1,4 @@
-// common/scene_data.glsl: the scene's GPU layouts (mirrors pipeline/render/scene_gpu.hpp) and the
+// common/scene_data.glsl: the scene's GPU layouts (mirrors pipeline/renderer/scene_gpu.hpp) and the
 // camera. Buffers themselves are declared by each shader, since their names are its bindings.
 #ifndef ASVGF_COMMON_SCENE_DATA_GLSL
 #define ASVGF_COMMON_SCENE_DATA_GLSL

@@ -107,7 +107,7 @@ Hit trace_closest(vec3 o, vec3 d, float tmin, float tmax, uint skip) {
     vec3 x = intersect_triangle_index(r, tri, tmin, tmax);
     if (x.x >= 0.0 && closer(x.x, tri, h)) {
       // Committing lets the traversal skip boxes beyond t; a box whose triangle ties at t still
-      // starts before t (boxes are padded, render/bvh.hpp), so it is still reported.
+      // starts before t (boxes are padded, renderer/bvh.hpp), so it is still reported.
       if (x.x < h.t) rayQueryGenerateIntersectionEXT(rq, x.x);
       h.hit = true;
       h.triangle = tri;

@@ -7,7 +7,7 @@
 //    (Cycles' Denoising Albedo) is divided by it and multiplied back.
 //  - Motion: m = scale * v per axis (asvgf::motion_scale: the sign, UV or NDC units to pixels, y up
 //    to down). The result is previous minus current position, in pixels, y down.
-// CPU twin: reference::convert_inputs (pipeline/reference/denoise_reference.cpp).
+// CPU twin: reference::convert_inputs (pipeline/cpu_oracle/denoise_reference.cpp).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require

@@ -5,7 +5,7 @@
 // renderer's (depth.y) when given, else estimated from the neighbours: per axis the smaller
 // difference to a neighbour that is not background (the one on the same surface at a silhouette),
 // then the larger of the two axes, as the G-buffer's max(|dz/dx|, |dz/dy|).
-// CPU twin: reference::pack_surface (pipeline/reference/denoise_reference.cpp).
+// CPU twin: reference::pack_surface (pipeline/cpu_oracle/denoise_reference.cpp).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require

@@ -2,7 +2,7 @@
 // conventions, include/asvgf/denoiser.hpp), for asvgf::Denoiser's `validate` option: non-finite and
 // negative values, normals that are not unit length, and whether the motion vectors lead to the same
 // surface in the previous frame as given or negated (the usual sign mistake). The counts go to an
-// SSBO (atomics: image atomics are not portable); pipeline/api/input_report.cpp words them.
+// SSBO (atomics: image atomics are not portable); pipeline/denoiser/api/input_report.cpp words them.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -24,7 +24,7 @@ layout(set = 0, binding = 3) uniform texture2D normal;
 layout(set = 0, binding = 4) uniform texture2D depth;
 layout(set = 0, binding = 5) uniform texture2D motion;
 layout(set = 0, binding = 6) uniform texture2D prev_depth_normal;
-// Indices as kInputCounts in pipeline/api/input_report.hpp.
+// Indices as kInputCounts in pipeline/denoiser/api/input_report.hpp.
 layout(set = 0, binding = 7) buffer Counts { uint values[16]; } counts;
 
 const float kSameSurface = 0.05;  // relative depth difference of "the same surface"

@@ -21,7 +21,7 @@
 #pragma GCC diagnostic ignored "-Wconversion"
 #pragma GCC diagnostic ignored "-Wuseless-cast"
 #pragma GCC diagnostic ignored "-Wdouble-promotion"
-// Private copy (as pipeline/scene/image.cpp): Debian's libstb.so exports the same symbols.
+// Private copy (as pipeline/renderer/scene/image.cpp): Debian's libstb.so exports the same symbols.
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #include <stb/stb_image.h>

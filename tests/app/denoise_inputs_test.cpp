@@ -11,7 +11,7 @@
 
 #include "frame_sequence.hpp"
 #include "motion_check.hpp"
-#include "render/image_io.hpp"
+#include "io/image_io.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wold-style-cast"

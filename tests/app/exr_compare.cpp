@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "render/image_io.hpp"
-#include "render/metrics.hpp"
+#include "io/image_io.hpp"
+#include "report/metrics.hpp"
 
 namespace {
 

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "render/image_io.hpp"
+#include "io/image_io.hpp"
 
 namespace {
 

@@ -13,8 +13,8 @@
 #include <fstream>
 #include <string>
 
-#include "scene/mesh_import.hpp"
-#include "scene/scene_file.hpp"
+#include "renderer/scene/mesh_import.hpp"
+#include "renderer/scene/scene_file.hpp"
 
 namespace {
 

@@ -17,7 +17,7 @@
 
 #include "gl/gl_device.hpp"
 #include "pipeline/frame_inputs.hpp"
-#include "scene/builtin.hpp"
+#include "renderer/scene/builtin.hpp"
 #include "vulkan/validated_device.hpp"
 
 using namespace asvgf;

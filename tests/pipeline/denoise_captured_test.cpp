@@ -5,11 +5,11 @@
 #include <doctest/doctest.h>
 
 #include "frame_inputs.hpp"
-#include "passes/atrous.hpp"
-#include "passes/temporal.hpp"
+#include "denoiser/passes/atrous.hpp"
+#include "denoiser/passes/temporal.hpp"
 #include "pipeline/denoise_harness.hpp"
-#include "reference/denoise_reference.hpp"
-#include "scene/builtin.hpp"
+#include "cpu_oracle/denoise_reference.hpp"
+#include "renderer/scene/builtin.hpp"
 #include "vulkan/validated_device.hpp"
 
 using namespace denoise_test;

@@ -6,8 +6,8 @@
 
 #include <optional>
 
-#include "passes/denoiser.hpp"
-#include "passes/temporal.hpp"
+#include "denoiser/passes/denoise_passes.hpp"
+#include "denoiser/passes/temporal.hpp"
 #include "pipeline/denoise_harness.hpp"
 
 namespace denoise_test {

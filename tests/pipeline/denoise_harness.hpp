@@ -19,10 +19,10 @@
 #include <string>
 #include <vector>
 
-#include "graph/graph_runtime.hpp"
+#include "denoiser/graph/graph_runtime.hpp"
 #include "hal/hal.hpp"
-#include "reference/image.hpp"
-#include "reference/octahedral.hpp"
+#include "cpu_oracle/image.hpp"
+#include "cpu_oracle/octahedral.hpp"
 
 namespace denoise_test {
 

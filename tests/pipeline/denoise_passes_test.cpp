@@ -12,16 +12,16 @@
 #include <doctest/doctest.h>
 
 #include "asvgf/denoiser.hpp"
-#include "passes/atrous.hpp"
-#include "passes/composite.hpp"
-#include "passes/convert_inputs.hpp"
-#include "passes/gradient.hpp"
-#include "passes/gradient_atrous.hpp"
-#include "passes/pack_surface.hpp"
-#include "passes/temporal.hpp"
-#include "passes/variance.hpp"
+#include "denoiser/passes/atrous.hpp"
+#include "denoiser/passes/composite.hpp"
+#include "denoiser/passes/convert_inputs.hpp"
+#include "denoiser/passes/gradient.hpp"
+#include "denoiser/passes/gradient_atrous.hpp"
+#include "denoiser/passes/pack_surface.hpp"
+#include "denoiser/passes/temporal.hpp"
+#include "denoiser/passes/variance.hpp"
 #include "pipeline/denoise_harness.hpp"
-#include "reference/denoise_reference.hpp"
+#include "cpu_oracle/denoise_reference.hpp"
 #include "vulkan/validated_device.hpp"
 
 using namespace denoise_test;

@@ -8,8 +8,8 @@
 #include <cstring>
 #include <string>
 
-#include "render/renderer.hpp"
-#include "scene/builtin.hpp"
+#include "renderer/renderer.hpp"
+#include "renderer/scene/builtin.hpp"
 #include "vulkan/validated_device.hpp"
 
 using namespace asvgf;

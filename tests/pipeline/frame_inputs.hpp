@@ -5,10 +5,10 @@
 #include <cstring>
 #include <vector>
 
-#include "graph/graph_runtime.hpp"
-#include "passes/frame_passes.hpp"
-#include "render/scene_gpu.hpp"
-#include "scene/scene.hpp"
+#include "denoiser/graph/graph_runtime.hpp"
+#include "renderer/render_passes.hpp"
+#include "renderer/scene_gpu.hpp"
+#include "renderer/scene/scene.hpp"
 
 struct FrameInputs {
   std::uint32_t width = 0, height = 0;

@@ -8,9 +8,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "frame_inputs.hpp"
-#include "reference/bsdf.hpp"
-#include "render/renderer.hpp"
-#include "scene/builtin.hpp"
+#include "cpu_oracle/bsdf.hpp"
+#include "renderer/renderer.hpp"
+#include "renderer/scene/builtin.hpp"
 #include "vulkan/validated_device.hpp"
 
 using namespace asvgf;

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <vector>
 
-#include "render/renderer.hpp"
-#include "scene/builtin.hpp"
+#include "renderer/renderer.hpp"
+#include "renderer/scene/builtin.hpp"
 
 namespace frame_parity {
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstddef>
 
-#include "render/renderer.hpp"
-#include "scene/builtin.hpp"
+#include "renderer/renderer.hpp"
+#include "renderer/scene/builtin.hpp"
 #include "vulkan/validated_device.hpp"
 
 using namespace asvgf;

@@ -9,9 +9,9 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "render/metrics.hpp"
-#include "render/renderer.hpp"
-#include "scene/builtin.hpp"
+#include "report/metrics.hpp"
+#include "renderer/renderer.hpp"
+#include "renderer/scene/builtin.hpp"
 #include "vulkan/validated_device.hpp"
 
 using namespace asvgf;

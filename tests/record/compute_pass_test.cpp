@@ -6,7 +6,7 @@
 
 #include "checked_record.hpp"
 #include "hal/error.hpp"
-#include "passes/compute_pass.hpp"
+#include "denoiser/passes/compute_pass.hpp"
 #include "shaders/accumulate.hpp"
 #include "shaders/atrous.history.hpp"
 #include "shaders/atrous.plain.hpp"

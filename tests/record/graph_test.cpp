@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <random>
 
-#include "frame/frame_graph.hpp"
-#include "scene/builtin.hpp"
-#include "graph/graph_runtime.hpp"
-#include "graph/pass_traffic.hpp"
+#include "renderer/frame_graph.hpp"
+#include "renderer/scene/builtin.hpp"
+#include "denoiser/graph/graph_runtime.hpp"
+#include "denoiser/graph/pass_traffic.hpp"
 #include "checked_record.hpp"
 #include "hal/error.hpp"
 #include "hal_record/record_device.hpp"

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "checked_record.hpp"
-#include "render/scene_gpu.hpp"
-#include "scene/builtin.hpp"
+#include "renderer/scene_gpu.hpp"
+#include "renderer/scene/builtin.hpp"
 
 using namespace asvgf;
 

@@ -12,8 +12,8 @@
 
 #include "hal/validate.hpp"
 #include "hal_vulkan/vulkan.hpp"
-#include "render/renderer.hpp"
-#include "scene/builtin.hpp"
+#include "renderer/renderer.hpp"
+#include "renderer/scene/builtin.hpp"
 
 using namespace asvgf;
 

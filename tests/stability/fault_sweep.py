@@ -10,7 +10,7 @@ left behind).
   fault_sweep.py OUT_DIR -- COMMAND...   COMMAND writes into OUT_DIR (cleared before each run)
   fault_sweep.py --files OUT_DIR -- COMMAND...
       the same over file output (ASVGF_FILE_FAULT: the n-th write, flush, sync, close or rename of
-      the process fails, render/atomic_file.hpp): every run must exit 1 naming the file and the
+      the process fails, io/atomic_file.hpp): every run must exit 1 naming the file and the
       cause, with no half-written file and no temporary file left behind (a failed output is never
       an exit 0).
 

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "render/image_io.hpp"
-#include "render/renderer.hpp"
-#include "scene/scene.hpp"
+#include "io/image_io.hpp"
+#include "renderer/renderer.hpp"
+#include "renderer/scene/scene.hpp"
 #include "vulkan/validated_device.hpp"
 
 using namespace asvgf;

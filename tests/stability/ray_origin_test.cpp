@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "pipeline/frame_inputs.hpp"
-#include "scene/builtin.hpp"
+#include "renderer/scene/builtin.hpp"
 #include "vulkan/validated_device.hpp"
 
 using namespace asvgf;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "reference/bsdf.hpp"
+#include "cpu_oracle/bsdf.hpp"
 
 using namespace asvgf::reference;
 

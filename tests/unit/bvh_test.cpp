@@ -1,4 +1,4 @@
-// The CPU BVH builder (render/bvh.hpp): structure, conservative padded boxes, and that the SAH
+// The CPU BVH builder (renderer/bvh.hpp): structure, conservative padded boxes, and that the SAH
 // splits pay off. The GPU traversal relies on every one of these.
 #include <doctest/doctest.h>
 
@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "render/bvh.hpp"
+#include "renderer/bvh.hpp"
 
 using namespace asvgf::render;
 

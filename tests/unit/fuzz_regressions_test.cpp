@@ -6,8 +6,8 @@
 #include <exception>
 #include <filesystem>
 
-#include "scene/mesh_import.hpp"
-#include "scene/scene_file.hpp"
+#include "renderer/scene/mesh_import.hpp"
+#include "renderer/scene/scene_file.hpp"
 
 namespace fs = std::filesystem;
 

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-#include "scene/mesh_import.hpp"
+#include "renderer/scene/mesh_import.hpp"
 
 namespace fs = std::filesystem;
 

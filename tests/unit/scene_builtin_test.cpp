@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "scene/builtin.hpp"
+#include "renderer/scene/builtin.hpp"
 
 using namespace asvgf::scene;
 

@@ -8,7 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/scene.hpp"
+#include "renderer/scene/scene.hpp"
 
 using namespace asvgf::scene;
 

@@ -8,7 +8,7 @@
 
 #include <unistd.h>
 
-#include "scene/scene_file.hpp"
+#include "renderer/scene/scene_file.hpp"
 
 using namespace asvgf::scene;
 namespace fs = std::filesystem;

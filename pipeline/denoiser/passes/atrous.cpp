@@ -1,0 +1,64 @@
+#include "denoiser/passes/atrous.hpp"
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "shaders/atrous.first.hpp"
+#include "shaders/atrous.first_history.hpp"
+#include "shaders/atrous.history.hpp"
+#include "shaders/atrous.last.hpp"
+#include "shaders/atrous.last_history.hpp"
+#include "shaders/atrous.middle.hpp"
+#include "shaders/atrous.middle_history.hpp"
+#include "shaders/atrous.plain.hpp"
+
+namespace asvgf::passes {
+namespace {
+
+// The uniform block as the shader tool generated it (every variant has the same block).
+using Uniforms = asvgf::shaders::atrous_plain_uniforms::Params;
+
+// The variant for the chain position: a storage buffer (the packed filter texels) in or out.
+const hal::ShaderInfo& atrous_shader(bool packed_in, bool packed_out, bool history) {
+  namespace sh = asvgf::shaders;
+  if (packed_in) {
+    if (packed_out) return history ? sh::atrous_middle_history : sh::atrous_middle;
+    return history ? sh::atrous_last_history : sh::atrous_last;
+  }
+  if (packed_out) return history ? sh::atrous_first_history : sh::atrous_first;
+  return history ? sh::atrous_history : sh::atrous_plain;
+}
+
+}  // namespace
+
+graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
+                              int iteration, const DenoiseSettings& s) {
+  const auto& decl = graph.resource(r.depth_normal);
+  const bool packed_in = graph.resource(r.color_in).kind == hal::ResourceKind::Buffer;
+  const bool packed_out = graph.resource(r.color_out).kind == hal::ResourceKind::Buffer;
+  if (packed_out && !packed_in && iteration != 0)
+    throw std::invalid_argument("add_atrous: packed filter texels from an RGBA16F input only at iteration 0 (step 1)");
+  // Every image and buffer must cover depth_normal's size, over which the pass dispatches.
+  for (const graph::ResourceId id : {r.color_in, r.color_out}) {
+    const auto& other = graph.resource(id);
+    const bool covers = other.kind == hal::ResourceKind::Buffer
+                            ? other.size >= std::uint64_t{16} * decl.width * decl.height
+                            : other.width == decl.width && other.height == decl.height;
+    if (!covers)
+      throw std::invalid_argument("add_atrous: '" + other.name + "' does not match depth_normal's " +
+                                  std::to_string(decl.width) + "x" + std::to_string(decl.height));
+  }
+  const Uniforms u{decl.width, decl.height, 1 << iteration, static_cast<std::uint32_t>(s.kernel),
+                   s.sigma_z,  s.sigma_n,   s.sigma_l};
+  std::vector<Binding> bindings{{"color_in", r.color_in}, {"depth_normal", r.depth_normal}, {"color_out", r.color_out}};
+  if (r.color_history) bindings.push_back({"color_history", *r.color_history});
+  const hal::ShaderInfo& shader = atrous_shader(packed_in, packed_out, r.color_history.has_value());
+  const auto pipeline = pipelines.get<Uniforms>(shader);
+  return add_compute_pass(graph, r.prefix + "atrous." + std::to_string(iteration + 1), shader, pipeline,
+                          std::move(bindings), to_bytes(u), {u.width, u.height, 1});
+}
+
+}  // namespace asvgf::passes

@@ -1,0 +1,32 @@
+// denoiser/passes/atrous.hpp: the `atrous` pass (shaders/denoise/atrous.comp): one iteration of the
+// edge-avoiding a-trous wavelet filter, step 2^iteration, optionally also writing the colour history.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "denoiser/graph/render_graph.hpp"
+#include "denoiser/passes/compute_pass.hpp"
+#include "denoiser/passes/denoise_settings.hpp"
+
+namespace asvgf::passes {
+
+struct AtrousResources {
+  // color_in and color_out: RGBA16F images (rgb, variance) or storage buffers of packed filter
+  // texels (16 bytes a pixel, in rows; shaders/common/filter_texel.glsl), which carry the surface too
+  // and which the iterations between a chain's first and last pass on. A buffer out from an image in
+  // is the first iteration only (it reads a shared-memory tile that needs step 1).
+  graph::ResourceId color_in = 0;                  // read
+  graph::ResourceId depth_normal = 0;              // read: RGBA32F
+  graph::ResourceId color_out = 0;                 // written
+  std::optional<graph::ResourceId> color_history;  // also written (persistent RGBA16F) at the history tap
+  std::string prefix;                              // of the pass name: "specular." for the second signal
+};
+// Adds "<prefix>atrous.<iteration + 1>" with step 2^iteration and the settings' kernel and sigmas.
+// The dispatch covers depth_normal's size. Throws std::invalid_argument for a buffer out from an
+// image in at an iteration other than 0, and for colour images of another size or buffers smaller
+// than 16 bytes a pixel.
+graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
+                              int iteration, const DenoiseSettings& settings);
+
+}  // namespace asvgf::passes

@@ -1,0 +1,34 @@
+#include "denoiser/passes/composite.hpp"
+
+#include <cstddef>
+
+#include "shaders/composite.one.hpp"
+#include "shaders/composite.split.hpp"
+
+namespace asvgf::passes {
+namespace {
+
+// The shader's uniform block, as the shader tool generated it.
+using Uniforms = asvgf::shaders::composite_one_uniforms::Params;
+
+}  // namespace
+
+graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipelines, const CompositeResources& r,
+                                 const DenoiseSettings& s) {
+  const auto& decl = graph.resource(r.hdr);
+  const Uniforms u{decl.width, decl.height, s.exposure, static_cast<std::uint32_t>(s.tonemap)};
+  const bool split = r.specular.has_value();
+  const hal::ShaderInfo& shader = split ? asvgf::shaders::composite_split : asvgf::shaders::composite_one;
+  const auto pipeline = pipelines.get<Uniforms>(shader);
+  std::vector<Binding> bindings{{"illumination", r.illumination},
+                                {"albedo", r.albedo},
+                                {"hdr", r.hdr},
+                                {"display", r.display},
+                                {"counters", r.counters}};
+  if (split)
+    bindings.insert(bindings.end(), {{"specular", *r.specular}, {"specular_albedo", r.specular_albedo.value()}});
+  return add_compute_pass(graph, "composite", shader, pipeline, std::move(bindings), to_bytes(u),
+                          {u.width, u.height, 1});
+}
+
+}  // namespace asvgf::passes

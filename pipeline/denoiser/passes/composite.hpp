@@ -1,0 +1,26 @@
+// denoiser/passes/composite.hpp: the `composite` pass (shaders/denoise/composite.comp): re-modulates the
+// albedo and writes HDR radiance (RGBA32F) and the tonemapped sRGB display image (RGBA8).
+#pragma once
+
+#include <optional>
+
+#include "denoiser/graph/render_graph.hpp"
+#include "denoiser/passes/compute_pass.hpp"
+#include "denoiser/passes/denoise_settings.hpp"
+
+namespace asvgf::passes {
+
+struct CompositeResources {
+  graph::ResourceId illumination = 0;  // read: any float format (filtered colour, or raw samples)
+  graph::ResourceId albedo = 0;        // read: RGBA16F
+  graph::ResourceId hdr = 0;           // written: RGBA32F
+  graph::ResourceId display = 0;       // written: RGBA8Unorm, sRGB-encoded
+  graph::ResourceId counters = 0;      // read-written SanitizeCounters buffer: zeroed outputs
+  // The filtered specular signal and its albedo, added (pathtrace's split signals).
+  std::optional<graph::ResourceId> specular, specular_albedo;
+};
+// Adds "composite" (settings.exposure, settings.tonemap).
+graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipelines, const CompositeResources& r,
+                                 const DenoiseSettings& settings);
+
+}  // namespace asvgf::passes

@@ -1,0 +1,131 @@
+#include "denoiser/passes/denoise_passes.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "denoiser/passes/atrous.hpp"
+#include "denoiser/passes/composite.hpp"
+#include "denoiser/passes/gradient.hpp"
+#include "denoiser/passes/gradient_atrous.hpp"
+#include "denoiser/passes/temporal.hpp"
+#include "denoiser/passes/variance.hpp"
+
+namespace asvgf::passes {
+
+namespace {
+
+// One signal's temporal filter (and variance and a-trous iterations for Spatiotemporal), with its
+// histories; resources and passes are named with `prefix`.
+struct Chain {
+  graph::ResourceId filtered = 0, moments = 0, integrated = 0, variance = 0, color_history = 0;
+};
+Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId signal,
+                const std::string& prefix, const DenoiserInputs& in, std::optional<graph::ResourceId> gradient,
+                const DenoiseSettings& s, Filter filter,
+                std::optional<graph::ResourceId> virtual_motion = std::nullopt) {
+  using F = hal::Format;
+  using graph::Lifetime;
+  using graph::ResourceId;
+  const auto& decl = graph.resource(signal);
+  const std::uint32_t w = decl.width, h = decl.height;
+  Chain c;
+  c.color_history = graph.add_image(prefix + "color_history", w, h, F::RGBA16F, Lifetime::Persistent);
+  c.moments = graph.add_image(prefix + "moments", w, h, F::RGBA32F, Lifetime::Persistent);
+  const bool spatial = filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
+  // Without a spatial filter the temporal result is itself next frame's colour history.
+  c.integrated = spatial ? graph.add_image(prefix + "integrated", w, h, F::RGBA16F) : c.color_history;
+  add_temporal(graph, pipelines,
+               {signal, virtual_motion.value_or(in.motion), in.depth_normal, c.color_history, c.moments, c.integrated,
+                in.counters, gradient, prefix, virtual_motion.has_value()},
+               s);
+  c.filtered = c.integrated;
+  c.variance = c.integrated;
+  if (!spatial) return c;
+  ResourceId current = graph.add_image(prefix + "color_variance", w, h, F::RGBA16F);
+  c.variance = current;
+  add_variance(graph, pipelines, {c.integrated, c.moments, in.depth_normal, current, prefix}, s);
+  const std::uint64_t range = pipelines.device().capabilities().max_storage_buffer_range;
+  const std::uint64_t max_storage_binding = range ? range : std::uint64_t{1} << 27;  // 0: not known
+  for (int i = 0; i < s.atrous_iterations; ++i) {
+    // Packed filter texels between the 5x5 kernel's iterations: one load a tap (denoiser/passes/atrous.hpp).
+    // The 3x3 box's 8 taps gain less than the wider texel costs (H200 1080p: 0.068 against 0.061 ms).
+    // Images too where the buffer would exceed the device's largest storage binding (Vulkan, OpenGL
+    // ES and WebGPU guarantee 2^27 bytes: 4K fits, 8K does not).
+    const std::string name = prefix + "atrous." + std::to_string(i + 1);
+    const std::uint64_t packed_bytes = std::uint64_t{w} * h * 16;
+    const bool packed =
+        i + 1 < s.atrous_iterations && s.kernel == AtrousKernel::B3Spline && packed_bytes <= max_storage_binding;
+    const ResourceId next = packed ? graph.add_buffer(name, packed_bytes) : graph.add_image(name, w, h, F::RGBA16F);
+    add_atrous(
+        graph, pipelines,
+        {current, in.depth_normal, next, i == s.history_tap ? std::optional(c.color_history) : std::nullopt, prefix}, i,
+        s);
+    current = next;
+  }
+  c.filtered = current;
+  return c;
+}
+
+}  // namespace
+
+DenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipelines, const DenoiserInputs& in,
+                             const DenoiseSettings& s, Filter filter) {
+  using F = hal::Format;
+  using graph::Lifetime;
+  using graph::ResourceId;
+  const auto& decl = graph.resource(in.illumination);
+  const std::uint32_t w = decl.width, h = decl.height;
+  DenoiserOutputs out;
+  out.filtered = in.illumination;
+
+  const bool filtered = s.adaptive && filter != Filter::None;
+  const bool reprojected = filtered && s.gradient_source == GradientSource::Reprojected;
+  if (reprojected || (filtered && in.gradient_prev)) {
+    // Re-shaded: declared on still frames too, so that dump() shows them left out with the reason.
+    // Reprojected: runs on every frame, still ones too: its luminance is the next frame's history.
+    const bool skip = !reprojected && !in.gradient_skip_reason.empty();
+    const std::uint32_t gw = (w + 2) / 3, gh = (h + 2) / 3;  // one stratum per 3x3 pixels
+    ResourceId current = graph.add_image("gradient", gw, gh, F::RGBA16F);
+    if (reprojected) {
+      const ResourceId luminance = graph.add_image("noisy_luminance", w, h, F::R32F, Lifetime::Persistent);
+      add_gradient_reprojected(graph, pipelines, {in.illumination, in.motion, in.depth_normal, luminance, current});
+    } else {
+      add_gradient(graph, pipelines, {in.illumination, *in.gradient_prev, current, in.specular.has_value()})
+          .skip_if(skip, in.gradient_skip_reason);
+    }
+    for (int i = 0; i < s.gradient_iterations; ++i) {
+      const ResourceId next = graph.add_image("gradient." + std::to_string(i + 1), gw, gh, F::RGBA16F);
+      add_gradient_atrous(graph, pipelines, {current, in.depth_normal, next}, i, s)
+          .skip_if(skip, in.gradient_skip_reason);
+      current = next;
+    }
+    if (!skip) out.gradient = current;
+  }
+
+  if (filter != Filter::None) {
+    const Chain diffuse = add_chain(graph, pipelines, in.illumination, "", in, out.gradient, s, filter);
+    out.filtered = diffuse.filtered;
+    out.moments = diffuse.moments;
+    out.integrated = diffuse.integrated;
+    out.variance = diffuse.variance;
+    out.color_history = diffuse.color_history;
+    if (in.specular) {
+      DenoiseSettings specular = s;
+      specular.atrous_iterations = s.specular_atrous_iterations;
+      specular.history_tap = std::min(s.history_tap, std::max(0, s.specular_atrous_iterations - 1));
+      out.specular =
+          add_chain(graph, pipelines, *in.specular, "specular.", in, out.gradient, specular, filter, in.specular_motion)
+              .filtered;
+    }
+  } else {
+    out.specular = in.specular;
+  }
+
+  add_composite(graph, pipelines,
+                {out.filtered, in.albedo, in.hdr, in.display, in.counters, out.specular,
+                 out.specular ? in.specular_albedo : std::nullopt},
+                s);
+  return out;
+}
+
+}  // namespace asvgf::passes

@@ -1,0 +1,29 @@
+#include "denoiser/passes/variance.hpp"
+
+#include <cstddef>
+
+#include "shaders/variance.hpp"
+
+namespace asvgf::passes {
+namespace {
+
+// The shader's uniform block, as the shader tool generated it.
+using Uniforms = asvgf::shaders::variance_uniforms::Params;
+
+}  // namespace
+
+graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipelines, const VarianceResources& r,
+                                const DenoiseSettings& s) {
+  const auto& decl = graph.resource(r.color_variance);
+  const Uniforms u{decl.width, decl.height, s.sigma_z, s.sigma_n, s.sigma_l, s.min_history};
+  const hal::ShaderInfo& shader = asvgf::shaders::variance;
+  const auto pipeline = pipelines.get<Uniforms>(shader);
+  return add_compute_pass(graph, r.prefix + "variance", shader, pipeline,
+                          {{"integrated", r.integrated},
+                           {"moments", r.moments},
+                           {"depth_normal", r.depth_normal},
+                           {"color_variance", r.color_variance}},
+                          to_bytes(u), {u.width, u.height, 1});
+}
+
+}  // namespace asvgf::passes

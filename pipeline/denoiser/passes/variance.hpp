@@ -1,0 +1,24 @@
+// denoiser/passes/variance.hpp: the `variance` pass (shaders/denoise/variance.comp): temporal variance from
+// the moments, or a 7x7 spatial estimate while the history is shorter than settings.min_history.
+#pragma once
+
+#include <string>
+
+#include "denoiser/graph/render_graph.hpp"
+#include "denoiser/passes/compute_pass.hpp"
+#include "denoiser/passes/denoise_settings.hpp"
+
+namespace asvgf::passes {
+
+struct VarianceResources {
+  graph::ResourceId integrated = 0;      // read: RGBA16F from the temporal pass
+  graph::ResourceId moments = 0;         // read: this frame's RGBA32F moments (E[l], E[l^2], n)
+  graph::ResourceId depth_normal = 0;    // read: RGBA32F
+  graph::ResourceId color_variance = 0;  // written: RGBA16F (rgb, variance)
+  std::string prefix;                    // of the pass name: "specular." for the second signal
+};
+// Adds "<prefix>variance".
+graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipelines, const VarianceResources& r,
+                                const DenoiseSettings& settings);
+
+}  // namespace asvgf::passes

@@ -1,0 +1,224 @@
+#include "io/image_io.hpp"
+
+#include "io/atomic_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+#pragma GCC diagnostic ignored "-Wcast-align"
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#define STB_IMAGE_WRITE_STATIC
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb/stb_image_write.h>
+#include <tinyexr.h>
+#pragma GCC diagnostic pop
+
+namespace asvgf::render {
+namespace {
+
+void check_size(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h, std::size_t values) {
+  if (w == 0 || h == 0 || values != std::size_t(w) * h * 4)
+    throw ImageIoError(path.string() + ": image of " + std::to_string(w) + "x" + std::to_string(h) + " has " +
+                       std::to_string(values) + " values, expected 4 per pixel");
+}
+
+void append_bytes(void* context, void* data, int size) {
+  auto* out = static_cast<std::vector<std::byte>*>(context);
+  const auto* p = static_cast<const std::byte*>(data);
+  out->insert(out->end(), p, p + size);
+}
+
+// The EXR file's bytes: RGB as 32-bit floats in B, G, R channel order (what viewers expect), ZIP
+// compressed but for images under 16x16 (as tinyexr's SaveEXR).
+std::vector<std::byte> encode_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h,
+                                  std::span<const float> rgba) {
+  const std::size_t pixels = std::size_t(w) * h;
+  std::vector<float> planes[3];
+  for (int c = 0; c < 3; ++c) {
+    planes[c].resize(pixels);
+    for (std::size_t p = 0; p < pixels; ++p) planes[c][p] = rgba[4 * p + std::size_t(c)];
+  }
+  float* plane_pointers[3] = {planes[2].data(), planes[1].data(), planes[0].data()};  // B, G, R
+  EXRImage image;
+  InitEXRImage(&image);
+  image.num_channels = 3;
+  image.images = reinterpret_cast<unsigned char**>(plane_pointers);
+  image.width = static_cast<int>(w);
+  image.height = static_cast<int>(h);
+  EXRHeader header;
+  InitEXRHeader(&header);
+  header.compression_type = w < 16 && h < 16 ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_ZIP;
+  EXRChannelInfo channels[3] = {};
+  int pixel_types[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
+  for (int c = 0; c < 3; ++c) channels[c].name[0] = "BGR"[c];
+  header.num_channels = 3;
+  header.channels = channels;
+  header.pixel_types = pixel_types;
+  header.requested_pixel_types = pixel_types;
+  unsigned char* memory = nullptr;
+  const char* err = nullptr;
+  const std::size_t size = SaveEXRImageToMemory(&image, &header, &memory, &err);
+  if (size == 0) {
+    std::string message = err ? err : "unknown error";
+    if (err) FreeEXRErrorMessage(err);
+    throw ImageIoError(path.string() + ": cannot encode EXR: " + message);
+  }
+  std::vector<std::byte> bytes(reinterpret_cast<const std::byte*>(memory),
+                               reinterpret_cast<const std::byte*>(memory) + size);
+  std::free(memory);
+  return bytes;
+}
+
+}  // namespace
+
+void write_png(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h, std::span<const std::uint8_t> rgba) {
+  check_size(path, w, h, rgba.size());
+  std::vector<std::byte> bytes;
+  if (!stbi_write_png_to_func(append_bytes, &bytes, static_cast<int>(w), static_cast<int>(h), 4, rgba.data(),
+                              static_cast<int>(w * 4)))
+    throw ImageIoError(path.string() + ": cannot encode PNG");
+  write_file_atomic(path, bytes);
+}
+
+void write_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h, std::span<const float> rgba) {
+  check_size(path, w, h, rgba.size());
+  for (std::size_t i = 0; i < rgba.size(); ++i)
+    if (!std::isfinite(rgba[i])) {
+      const std::size_t pixel = i / 4;
+      throw ImageIoError(path.string() + ": refusing to write a non-finite value at pixel (" +
+                         std::to_string(pixel % w) + ", " + std::to_string(pixel / w) + ")");
+    }
+  write_file_atomic(path, encode_exr(path, w, h, rgba));
+}
+
+namespace {
+
+// "ViewLayer.Combined, ViewLayer.Depth" for channels "ViewLayer.Combined.R", ..., "ViewLayer.Depth.Z".
+std::string layers_of(const std::vector<std::string>& channels) {
+  std::vector<std::string> layers;
+  for (const auto& c : channels) {
+    const auto dot = c.rfind('.');
+    const std::string layer = dot == std::string::npos ? "(no layer)" : c.substr(0, dot);
+    if (std::find(layers.begin(), layers.end(), layer) == layers.end()) layers.push_back(layer);
+  }
+  std::string text;
+  for (const auto& l : layers) text += (text.empty() ? "" : ", ") + l;
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> read_exr_channel_names(const std::filesystem::path& path) {
+  EXRVersion version;
+  EXRHeader header;
+  InitEXRHeader(&header);
+  const char* err = nullptr;
+  if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS || version.multipart || version.non_image ||
+      ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    if (err) FreeEXRErrorMessage(err);
+    throw ImageIoError(path.string() + ": cannot read EXR: not a single-part OpenEXR file (or unreadable)");
+  }
+  std::vector<std::string> names;
+  for (int i = 0; i < header.num_channels; ++i) names.emplace_back(header.channels[i].name);
+  FreeEXRHeader(&header);
+  return names;
+}
+
+ExrImage read_exr(const std::filesystem::path& path, std::span<const std::string> slots) {
+  const std::string name = path.string();
+  if (slots.size() > 4) throw ImageIoError(name + ": at most 4 channels can be read into one image");
+  EXRVersion version;
+  if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS)
+    throw ImageIoError(name + ": cannot read EXR: not an OpenEXR file (or unreadable)");
+  if (version.multipart || version.non_image)
+    throw ImageIoError(name + ": cannot read EXR: multi-part and deep files are not supported");
+  EXRHeader header;
+  InitEXRHeader(&header);
+  const char* err = nullptr;
+  auto fail = [&](const std::string& what) {
+    std::string message = err ? err : what;
+    if (err) FreeEXRErrorMessage(err);
+    throw ImageIoError(name + ": cannot read EXR: " + message);
+  };
+  if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) fail("bad header");
+  ExrImage out;
+  int index[4] = {-1, -1, -1, -1};  // R, G, B, A
+  std::string unsupported;
+  for (int i = 0; i < header.num_channels; ++i) {
+    const std::string channel = header.channels[i].name;
+    out.channels.push_back(channel);
+    if (header.pixel_types[i] == TINYEXR_PIXELTYPE_UINT) unsupported = channel;
+    header.requested_pixel_types[i] = TINYEXR_PIXELTYPE_FLOAT;
+    for (std::size_t c = 0; c < 4; ++c)
+      if (slots.empty() ? channel == std::string(1, "RGBA"[c]) : c < slots.size() && channel == slots[c]) index[c] = i;
+  }
+  if (!slots.empty()) {
+    // Named channels (a multilayer file's "Layer.Pass.Channel"): every one must be there.
+    for (std::size_t c = 0; c < slots.size(); ++c)
+      if (index[c] < 0) {
+        const std::string layers = layers_of(out.channels);
+        FreeEXRHeader(&header);
+        throw ImageIoError(name + ": cannot read EXR: no channel '" + slots[c] + "' (its layers: " + layers + ")");
+      }
+    out.channels.assign({"R", "G", "B", "A"});
+    out.channels.resize(slots.size());
+  }
+  if (!unsupported.empty()) {
+    FreeEXRHeader(&header);
+    throw ImageIoError(name + ": cannot read EXR: channel " + unsupported + " holds unsigned integers, not floats");
+  }
+  // One channel of any name is a grey image (as tinyexr's LoadEXR reads it).
+  if (slots.empty() && header.num_channels == 1) {
+    index[0] = index[1] = index[2] = 0;
+    for (const char* c : {"R", "G", "B"})
+      if (out.channels.front() != c) out.channels.emplace_back(c);
+  }
+  if (index[0] < 0 && index[1] < 0 && index[2] < 0 && index[3] < 0) {
+    const std::string layers = layers_of(out.channels);
+    FreeEXRHeader(&header);
+    if (layers.find("(no layer)") == std::string::npos)
+      throw ImageIoError(name + ": cannot read EXR: a multilayer file (layers: " + layers +
+                         "): name its channels (asvgf denoise --from cycles, or --channels BUFFER=CHANNELS)");
+    throw ImageIoError(name + ": cannot read EXR: no R, G, B or A channel (and more than one channel)");
+  }
+  EXRImage image;
+  InitEXRImage(&image);
+  if (LoadEXRImageFromFile(&image, &header, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    FreeEXRHeader(&header);
+    fail("bad pixel data");
+  }
+  out.width = static_cast<std::uint32_t>(image.width);
+  out.height = static_cast<std::uint32_t>(image.height);
+  out.rgba.assign(std::size_t(out.width) * out.height * 4, 0.0f);
+  for (std::size_t p = 0; p < std::size_t(out.width) * out.height; ++p) out.rgba[4 * p + 3] = 1.0f;
+  // Copies one block of planes (the whole image, or a tile) into RGBA.
+  auto copy = [&](unsigned char** planes, int x0, int y0, int bw, int bh) {
+    for (int c = 0; c < 4; ++c) {
+      if (index[c] < 0) continue;
+      const float* plane = reinterpret_cast<const float*>(planes[index[c]]);
+      for (int y = 0; y < bh; ++y)
+        for (int x = 0; x < bw; ++x) {
+          if (x0 + x >= image.width || y0 + y >= image.height) continue;
+          out.rgba[(std::size_t(y0 + y) * out.width + std::size_t(x0 + x)) * 4 + std::size_t(c)] = plane[y * bw + x];
+        }
+    }
+  };
+  if (header.tiled) {
+    for (int t = 0; t < image.num_tiles; ++t)
+      copy(image.tiles[t].images, image.tiles[t].offset_x * header.tile_size_x,
+           image.tiles[t].offset_y * header.tile_size_y, header.tile_size_x, header.tile_size_y);
+  } else {
+    copy(image.images, 0, 0, image.width, image.height);
+  }
+  FreeEXRImage(&image);
+  FreeEXRHeader(&header);
+  return out;
+}
+
+}  // namespace asvgf::render

@@ -1,0 +1,25 @@
+// renderer/aov_passes.hpp: the frame's denoiser inputs exported in the public API's conventions
+// (include/asvgf/denoiser.hpp), for `asvgf render --aovs`: an export pass for depth, normal and
+// albedo (shaders/frame/export_aovs.comp) and plain copies for the rest.
+#pragma once
+
+#include <string>
+
+#include "denoiser/graph/render_graph.hpp"
+#include "denoiser/passes/compute_pass.hpp"
+
+namespace asvgf::passes {
+
+struct ExportAovResources {
+  graph::ResourceId depth_normal = 0;                       // read: RGBA32F (z, dz, octahedral normal)
+  graph::ResourceId albedo = 0;                             // read: RGBA16F
+  graph::ResourceId depth = 0, normal = 0, albedo_out = 0;  // written: RGBA32F
+};
+// Adds "export_aovs".
+graph::PassBuilder add_export_aovs(graph::RenderGraph& graph, PipelineCache& pipelines, const ExportAovResources& r);
+
+// Adds a pass `name` copying image `src` into `dst` (same size and format).
+graph::PassBuilder add_image_copy(graph::RenderGraph& graph, const std::string& name, graph::ResourceId src,
+                                  graph::ResourceId dst);
+
+}  // namespace asvgf::passes

@@ -1,0 +1,221 @@
+// The noisy-input passes: each fills its shader's generated uniform struct.
+#include "renderer/render_passes.hpp"
+
+#include "shaders/accumulate.hpp"
+#include "shaders/debug_view.hpp"
+#include "shaders/gbuffer.rayquery.hpp"
+#include "shaders/gbuffer.software.hpp"
+#include "shaders/gradient_clear.hpp"
+#include "shaders/gradient_resolve.hpp"
+#include "shaders/gradient_select.hpp"
+#include "shaders/pathtrace.rayquery.hpp"
+#include "shaders/pathtrace.rayquery_gradients.hpp"
+#include "shaders/pathtrace.rayquery_gradients_split.hpp"
+#include "shaders/pathtrace.rayquery_split.hpp"
+#include "shaders/pathtrace.software.hpp"
+#include "shaders/pathtrace.software_gradients.hpp"
+#include "shaders/pathtrace.software_gradients_split.hpp"
+#include "shaders/pathtrace.software_split.hpp"
+#include "shaders/specular_motion.hpp"
+
+namespace asvgf::passes {
+namespace {
+
+// Every variant of a shader has the same uniform block: one generated struct serves them all.
+using GbufferParams = shaders::gbuffer_software_uniforms::Params;
+using PathtraceParams = shaders::pathtrace_software_uniforms::Params;
+using GradientClearParams = shaders::gradient_clear_uniforms::Params;
+using GradientSelectParams = shaders::gradient_select_uniforms::Params;
+using GradientResolveParams = shaders::gradient_resolve_uniforms::Params;
+using AccumulateParams = shaders::accumulate_uniforms::Params;
+using DebugViewParams = shaders::debug_view_uniforms::Params;
+
+// The camera as a shader's generated Camera struct.
+template <typename Camera>
+Camera uniform_camera(const render::GpuCamera& c) {
+  const auto v = [](const glm::vec4& x) { return std::array<float, 4>{x.x, x.y, x.z, x.w}; };
+  return {v(c.position), v(c.forward), v(c.right), v(c.up)};
+}
+
+// The scene buffers `shader` actually binds (the optimiser drops unused ones).
+std::vector<Binding> scene_bindings(const SceneInputs& s, const hal::ShaderInfo& shader) {
+  std::vector<Binding> all = {{"triangles", s.triangles},       {"previous_triangles", s.previous_triangles},
+                              {"materials", s.materials},       {"lights", s.lights},
+                              {"triangle_uvs", s.triangle_uvs}, {"texels", s.texels}};
+  if (s.ray_query)
+    all.push_back({"scene", s.tlas});
+  else
+    all.insert(all.end(), {{"bvh_nodes", s.bvh_nodes}, {"bvh_triangles", s.bvh_triangles}});
+  std::vector<Binding> used;
+  for (auto& b : all)
+    if (shader.find(b.name)) used.push_back(std::move(b));
+  return used;
+}
+
+}  // namespace
+
+SceneInputs import_scene(graph::RenderGraph& graph, const render::SceneGpu& scene, std::uint32_t width,
+                         std::uint32_t height) {
+  SceneInputs s;
+  s.ray_query = scene.ray_query();
+  const auto read = hal::State::ShaderRead;
+  if (s.ray_query) {
+    s.tlas = graph.import("scene.tlas", scene.tlas(), hal::State::AccelRead);
+  } else {
+    s.bvh_nodes = graph.import("scene.bvh_nodes", scene.bvh_nodes(), read);
+    s.bvh_triangles = graph.import("scene.bvh_triangles", scene.bvh_triangles(), read);
+  }
+  s.triangles = graph.import("scene.triangles", scene.triangles(), read);
+  s.previous_triangles = graph.import("scene.previous_triangles", scene.previous_triangles(), read);
+  s.materials = graph.import("scene.materials", scene.materials(), read);
+  s.lights = graph.import("scene.lights", scene.lights(), read);
+  s.triangle_uvs = graph.import("scene.triangle_uvs", scene.triangle_uvs(), read);
+  s.texels = graph.import("scene.texels", scene.texels(), read);
+  s.light_count = scene.light_count();
+  s.sphere_count = scene.sphere_light_count();
+  s.camera = render::make_camera(scene.state().camera, width, height);
+  s.previous_camera = render::make_camera(scene.previous_state().camera, width, height);
+  return s;
+}
+
+void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene, const GbufferTargets& t,
+                 std::uint32_t width, std::uint32_t height, bool demodulate) {
+  const hal::ShaderInfo& shader = scene.ray_query ? shaders::gbuffer_rayquery : shaders::gbuffer_software;
+  using Camera = shaders::gbuffer_software_uniforms::Camera;
+  const GbufferParams params{uniform_camera<Camera>(scene.camera),
+                             uniform_camera<Camera>(scene.previous_camera),
+                             width,
+                             height,
+                             scene.sphere_count,
+                             !demodulate             ? 0u
+                             : t.diffuse_albedo_only ? 2u
+                                                     : 1u};
+  auto bindings = scene_bindings(scene, shader);
+  bindings.insert(
+      bindings.end(),
+      {{"visibility", t.visibility}, {"depth_normal", t.depth_normal}, {"motion", t.motion}, {"albedo", t.albedo}});
+  add_compute_pass(graph, "gbuffer", shader, pipelines.get<decltype(params)>(shader), std::move(bindings),
+                   to_bytes(params), {width, height, 1});
+}
+
+void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                   graph::ResourceId visibility, std::optional<CarriedSamples> carried, graph::ResourceId illumination,
+                   graph::ResourceId rng_seed, graph::ResourceId ray_counter, const PathtraceSettings& s,
+                   std::uint32_t width, std::uint32_t height, const std::string& name,
+                   std::optional<SpecularTargets> specular) {
+  // [ray query][gradient samples][split signals]
+  const hal::ShaderInfo* const variants[2][2][2] = {
+      {{&shaders::pathtrace_software, &shaders::pathtrace_software_split},
+       {&shaders::pathtrace_software_gradients, &shaders::pathtrace_software_gradients_split}},
+      {{&shaders::pathtrace_rayquery, &shaders::pathtrace_rayquery_split},
+       {&shaders::pathtrace_rayquery_gradients, &shaders::pathtrace_rayquery_gradients_split}}};
+  const hal::ShaderInfo& shader = *variants[scene.ray_query ? 1 : 0][carried ? 1 : 0][specular ? 1 : 0];
+  const PathtraceParams params{uniform_camera<shaders::pathtrace_software_uniforms::Camera>(scene.camera),
+                               width,
+                               height,
+                               s.frame,
+                               s.seed,
+                               scene.light_count,
+                               scene.sphere_count,
+                               s.max_bounces,
+                               s.spp,
+                               s.demodulate ? 1u : 0u};
+  auto bindings = scene_bindings(scene, shader);
+  bindings.insert(bindings.end(), {{"visibility", visibility},
+                                   {"illumination", illumination},
+                                   {"rng_seed", rng_seed},
+                                   {"ray_counter", ray_counter}});
+  if (carried) bindings.insert(bindings.end(), {{"gradient_seeds", carried->seeds}, {"gradient_prev", carried->prev}});
+  if (specular)
+    bindings.insert(bindings.end(), {{"specular", specular->signal}, {"specular_albedo", specular->albedo}});
+  add_compute_pass(graph, name, shader, pipelines.get<decltype(params)>(shader), std::move(bindings), to_bytes(params),
+                   {width, height, 1});
+}
+
+void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                         const GradientSelectTargets& t, std::uint32_t frame, std::uint32_t width, std::uint32_t height,
+                         const std::string& skip_reason) {
+  const std::uint32_t sw = groups_for(width, 3), sh = groups_for(height, 3);
+  const GradientClearParams clear{width, height, sw, sh};
+  add_compute_pass(graph, "gradient_clear", shaders::gradient_clear,
+                   pipelines.get<GradientClearParams>(shaders::gradient_clear),
+                   {{"claims", t.claims}, {"gradient_prev", t.carried.prev}}, to_bytes(clear), {sw, sh, 1})
+      .skip_if(!skip_reason.empty(), skip_reason);
+  // Bids, then the winners write: the lowest bid wins whatever order invocations run in.
+  const GradientSelectParams select{
+      uniform_camera<shaders::gradient_select_uniforms::Camera>(scene.camera), width, height, sw, sh, frame, 0, 0, 0};
+  const GradientResolveParams resolve{uniform_camera<shaders::gradient_resolve_uniforms::Camera>(scene.camera),
+                                      width,
+                                      height,
+                                      sw,
+                                      sh,
+                                      frame,
+                                      t.luminance_in_alpha ? 1u : 0u,
+                                      0,
+                                      0};
+  add_compute_pass(graph, "gradient_select", shaders::gradient_select,
+                   pipelines.get<GradientSelectParams>(shaders::gradient_select),
+                   {{"triangles", scene.triangles},
+                    {"prev_visibility", t.visibility, true},
+                    {"prev_rng_seed", t.rng_seed, true},
+                    {"depth_normal", t.depth_normal},
+                    {"claims", t.claims}},
+                   to_bytes(select), {sw, sh, 1})
+      .skip_if(!skip_reason.empty(), skip_reason);
+  add_compute_pass(graph, "gradient_resolve", shaders::gradient_resolve,
+                   pipelines.get<GradientResolveParams>(shaders::gradient_resolve),
+                   {{"triangles", scene.triangles},
+                    {"prev_visibility", t.visibility, true},
+                    {"prev_rng_seed", t.rng_seed, true},
+                    {"prev_illumination", t.illumination, true},
+                    // No depth_normal: a winner passed its tests in gradient_select already.
+                    {"claims", t.claims},
+                    // Written only where a sample landed: elsewhere gradient_prev keeps gradient_clear's -1
+                    // and the seeds are undefined (pathtrace reads them only where gradient_prev.y names a pixel).
+                    {"gradient_seeds", t.carried.seeds},
+                    {"gradient_prev", t.carried.prev}},
+                   to_bytes(resolve), {sw, sh, 1})
+      .skip_if(!skip_reason.empty(), skip_reason);
+}
+
+void add_specular_motion(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                         graph::ResourceId depth_normal, graph::ResourceId motion, graph::ResourceId specular,
+                         graph::ResourceId target, std::uint32_t width, std::uint32_t height) {
+  using Params = shaders::specular_motion_uniforms::Params;
+  using Camera = shaders::specular_motion_uniforms::Camera;
+  const Params params{
+      uniform_camera<Camera>(scene.camera), uniform_camera<Camera>(scene.previous_camera), width, height, 0, 0};
+  add_compute_pass(
+      graph, "specular_motion", shaders::specular_motion, pipelines.get<Params>(shaders::specular_motion),
+      {{"depth_normal", depth_normal}, {"motion", motion}, {"specular", specular}, {"specular_motion", target}},
+      to_bytes(params), {width, height, 1});
+}
+
+void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId illumination,
+                    graph::ResourceId accumulation, bool history_valid, std::uint32_t width, std::uint32_t height) {
+  const AccumulateParams params{width, height, history_valid ? 1u : 0u, 0};
+  add_compute_pass(
+      graph, "accumulate", shaders::accumulate, pipelines.get<AccumulateParams>(shaders::accumulate),
+      {{"illumination", illumination}, {"prev_accumulation", accumulation, true}, {"accumulation", accumulation}},
+      to_bytes(params), {width, height, 1});
+}
+
+void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const DebugViewInputs& in, DebugView view,
+                    std::uint32_t width, std::uint32_t height) {
+  // Buffers the method lacks are bound to the noisy input (always there) and flagged unavailable.
+  const std::uint32_t available = (in.gradient ? 1u : 0u) | (in.moments ? 2u : 0u) | (in.variance ? 4u : 0u);
+  const DebugViewParams params{
+      width, height, static_cast<std::uint32_t>(view), 0.25f, in.denoise.alpha, in.denoise.history_cap, available, 0};
+  add_compute_pass(graph, "debug_view", shaders::debug_view, pipelines.get<DebugViewParams>(shaders::debug_view),
+                   {{"depth_normal", in.depth_normal},
+                    {"motion", in.motion},
+                    {"albedo", in.albedo},
+                    {"illumination", in.illumination},
+                    {"gradient", in.gradient.value_or(in.illumination)},
+                    {"moments", in.moments.value_or(in.illumination)},
+                    {"variance", in.variance.value_or(in.illumination)},
+                    {"debug_view", in.target}},
+                   to_bytes(params), {width, height, 1});
+}
+
+}  // namespace asvgf::passes

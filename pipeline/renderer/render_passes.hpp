@@ -1,0 +1,113 @@
+// renderer/render_passes.hpp: the passes that make the noisy input: scene import, gbuffer, path
+// tracing, A-SVGF gradient-sample selection, and reference accumulation.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "denoiser/passes/compute_pass.hpp"
+#include "denoiser/passes/denoise_settings.hpp"
+#include "renderer/scene_gpu.hpp"
+
+namespace asvgf::passes {
+
+// The scene's GPU buffers as imported graph resources (read-only in the frame).
+struct SceneInputs {
+  bool ray_query = false;
+  graph::ResourceId tlas = 0, bvh_nodes = 0, bvh_triangles = 0;
+  graph::ResourceId triangles = 0, previous_triangles = 0, materials = 0, lights = 0;
+  graph::ResourceId triangle_uvs = 0, texels = 0;  // albedo textures
+  std::uint32_t light_count = 0, sphere_count = 0;
+  render::GpuCamera camera{}, previous_camera{};
+};
+SceneInputs import_scene(graph::RenderGraph& graph, const render::SceneGpu& scene, std::uint32_t width,
+                         std::uint32_t height);
+
+struct GbufferTargets {
+  graph::ResourceId visibility, depth_normal, motion, albedo;
+  bool diffuse_albedo_only = false;  // the diffuse lobe's albedo (pathtrace's split signals)
+};
+// `demodulate` false: the albedo written is 1 (the denoiser then filters radiance, albedo included).
+void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                 const GbufferTargets& targets, std::uint32_t width, std::uint32_t height, bool demodulate = true);
+
+struct SpecularTargets {
+  graph::ResourceId signal, albedo;
+};
+struct PathtraceSettings {
+  std::uint32_t frame = 0;        // decorrelates frames
+  std::uint32_t seed = 0;         // --seed: the whole run's random numbers
+  std::uint32_t max_bounces = 4;  // path length after the primary hit
+  std::uint32_t spp = 1;          // samples per pixel in this dispatch
+  bool demodulate = true;         // false: illumination is radiance (no division by the albedo)
+};
+// What gradient_resolve writes for pathtrace, one entry a 3x3 stratum: the carried seed and surface
+// point (RGBA32Uint) and which pixel of the stratum gets them (gradient_prev, RGBA32F, .y: 0-8; -1,
+// gradient_clear's, where no sample landed).
+struct CarriedSamples {
+  graph::ResourceId seeds, prev;
+};
+// `carried` present: the A-SVGF variant that starts carried pixels from last frame's point.
+// `specular` present: the split variant writes the specular signal (RGBA32F) and the GGX lobe's
+// albedo (RGBA16F) there, and the diffuse signal, with the one-signal luminance in .a, to
+// `illumination` (the gbuffer writes the diffuse albedo: GbufferTargets::diffuse_albedo_only).
+// `ray_counter`: a buffer whose first uint the pass adds the rays it traced to (closest-hit and
+// shadow rays after the primary hit; the primary ray is the gbuffer's).
+void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                   graph::ResourceId visibility, std::optional<CarriedSamples> carried, graph::ResourceId illumination,
+                   graph::ResourceId rng_seed, graph::ResourceId ray_counter, const PathtraceSettings& settings,
+                   std::uint32_t width, std::uint32_t height, const std::string& name = "pathtrace",
+                   std::optional<SpecularTargets> specular = std::nullopt);
+
+struct GradientSelectTargets {
+  graph::ResourceId visibility;    // persistent: last frame's version is read
+  graph::ResourceId rng_seed;      // persistent: last frame's version is read
+  graph::ResourceId illumination;  // persistent: last frame's version is read
+  graph::ResourceId depth_normal;  // this frame's
+  graph::ResourceId claims;        // transient buffer, one uint per stratum
+  CarriedSamples carried;          // stratum-sized
+  bool luminance_in_alpha = false;  // illumination holds pathtrace's split signals
+};
+// Three passes: gradient_clear, gradient_select (bids), gradient_resolve (the winners write). Left
+// out, with `skip_reason`, when not empty.
+void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                         const GradientSelectTargets& targets, std::uint32_t frame, std::uint32_t width,
+                         std::uint32_t height, const std::string& skip_reason);
+
+// The specular history's motion through each pixel's reflection (shaders/frame/specular_motion.comp):
+// reads depth_normal, motion and pathtrace's split `specular` (a: the reflected ray's length), writes
+// `target` (RGBA32F, xy).
+void add_specular_motion(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
+                         graph::ResourceId depth_normal, graph::ResourceId motion, graph::ResourceId specular,
+                         graph::ResourceId target, std::uint32_t width, std::uint32_t height);
+
+// Running mean of `illumination` into the persistent `accumulation` (restarted when !history_valid).
+void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId illumination,
+                    graph::ResourceId accumulation, bool history_valid, std::uint32_t width, std::uint32_t height);
+
+// The demo's view of an intermediate buffer.
+// The last four are the denoiser's state as heat maps (shaders/frame/debug_view.comp): A-SVGF's
+// temporal gradient lambda, the temporal blend factor alpha, the luminance standard deviation that
+// steers the a-trous filter, the history length; black where the method has no such buffer.
+enum class DebugView : std::uint32_t {
+  Normals = 0,
+  Depth = 1,
+  Motion = 2,
+  Albedo = 3,
+  NoisyInput = 4,
+  Gradient = 5,
+  Alpha = 6,
+  Variance = 7,
+  HistoryLength = 8
+};
+struct DebugViewInputs {
+  graph::ResourceId depth_normal, motion, albedo, illumination, target;
+  std::optional<graph::ResourceId> gradient;  // 1/3 res (delta^, Delta^), when the gradient ran this frame
+  std::optional<graph::ResourceId> moments;   // temporal's output (E[l], E[l^2], n)
+  std::optional<graph::ResourceId> variance;  // colour with variance in .a (variance pass, or temporal's)
+  DenoiseSettings denoise;                    // what the temporal pass used (alpha, history cap)
+};
+void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const DebugViewInputs& inputs, DebugView view,
+                    std::uint32_t width, std::uint32_t height);
+
+}  // namespace asvgf::passes
