@@ -131,10 +131,10 @@ std::string motion_options(const MotionConvention& m) {
 }
 
 std::string InputConventions::describe() const {
-  if (still) return std::string(color == ColorInput::Radiance ? "radiance" : "demodulated colour") + ", still (no motion)";
-  return std::string(color == ColorInput::Radiance ? "radiance" : "demodulated colour") + ", motion " +
-         (motion.previous_minus_current ? "previous minus current" : "current minus previous") + " in " +
-         units_name(motion.units) + ", y " + (motion.y_up ? "up" : "down");
+  const std::string kind = color == ColorInput::Radiance ? "radiance" : "demodulated colour";
+  if (still) return kind + ", still (no motion)";
+  return kind + ", motion " + (motion.previous_minus_current ? "previous minus current" : "current minus previous") +
+         " in " + units_name(motion.units) + ", y " + (motion.y_up ? "up" : "down");
 }
 
 }  // namespace asvgf::cli

@@ -25,10 +25,13 @@ std::string expand(const char* pattern, int frame) {
   return buffer.data();
 }
 
+// The film's channels, in its order.
+// clang-format off
 const std::array<const char*, 23> kPbrtChannels = {
-    "R",  "G",  "B",  "Albedo.R", "Albedo.G", "Albedo.B",   "Px",         "Py",         "Pz",
-    "dzdx", "dzdy", "Nx", "Ny",       "Nz",       "Nsx",        "Nsy",        "Nsz",        "Variance.R",
-    "Variance.G", "Variance.B", "RelativeVariance.R", "RelativeVariance.G", "RelativeVariance.B"};
+    "R", "G", "B", "Albedo.R", "Albedo.G", "Albedo.B", "Px", "Py", "Pz", "dzdx", "dzdy",
+    "Nx", "Ny", "Nz", "Nsx", "Nsy", "Nsz",
+    "Variance.R", "Variance.G", "Variance.B", "RelativeVariance.R", "RelativeVariance.G", "RelativeVariance.B"};
+// clang-format on
 
 void write_pbrt_frame(const std::filesystem::path& dir, int frame, const std::string& out) {
   using asvgf::render::read_exr;
