@@ -61,7 +61,7 @@ FrameTime frame_time(const render::Renderer& renderer) {
 // The run's frames again, back to back with nothing read back, after at least half a second of
 // warm-up renders: a GPU lowers its clock while it idles, as it does between the frames of the
 // quality pass (their host work takes longer than their GPU work), which would slow short frames
-// most. Measured on an H200 at 1920x1080: asvgf 12.7-14.4 ms a frame timed inline, 2.7 ms here.
+// most (docs/quality.md has the difference measured on a GPU).
 std::vector<FrameTime> time_back_to_back(hal::Device& device, const scene::Scene& scene, render::RenderSettings s,
                                          int frames) {
   s.read_back = false;

@@ -45,7 +45,7 @@ struct FrameConfig {
   // surface's GGX lobe reflects apart from the rest, each with its own albedo and histories (ema,
   // svgf, asvgf with re-shaded gradients, no AOVs), the specular history reprojected through the
   // reflection's virtual point. Off by default: it pays when the camera moves and costs a little
-  // when it does not (docs/performance.md, steps 7 and 8).
+  // when it does not (docs/quality.md).
   bool specular_split = false;
 };
 

@@ -1,8 +1,7 @@
 // common/filter_texel.glsl: the a-trous iterations' packed texel (a uvec4 a pixel, in a storage
 // buffer): everything a tap needs in one 128-bit load, with a normal that needs no octahedral
-// decode. On the H200 the taps' two fetches (colour, depth_normal) and their arithmetic (the
-// octahedral decode the largest part) each bounded an iteration at about 0.1 ms at 1080p
-// (docs/performance.md, steps 9, 10 and 13).
+// decode: the taps' two fetches (colour, depth_normal) and their arithmetic (the octahedral decode
+// the largest part) each bounded an iteration (docs/performance.md).
 //   x: colour r, g as halves      y: colour b, variance as halves
 //   z: depth (float bits; 0 = no hit), negated where the normal's z is negative
 //   w: normal x, y as halves; z = +-sqrt(1 - x^2 - y^2) with the depth's sign
@@ -10,9 +9,8 @@
 // y round to half (one fp16 ulp, 2^-11, at worst); z rebuilt from them is within min(0.037,
 // 1.4e-3 / |z|): near z = 0 the rebuild is ill-conditioned (up to 2 degrees where a smooth surface's
 // normal crosses z = 0: neighbours there weigh about 0.8 instead of 1 under sigma_n = 128). Two
-// better-conditioned layouts cost more than they gave on the H200: x, y as snorm16 (0.4 degrees;
-// 0.109 ms an iteration against 0.081) and rebuilding the largest component (with snorm16: 0.122;
-// docs/performance.md, step 14). A normal decoded twice is the same, so equal normals weigh 1 (to
+// better-conditioned layouts cost more than they gave: x, y as snorm16 (0.4 degrees) and
+// rebuilding the largest component (docs/performance.md). A normal decoded twice is the same, so equal normals weigh 1 (to
 // fp32 rounding). Read on the CPU by the tests' unpack_filter_texels (tests/pipeline/denoise_harness.hpp).
 #ifndef ASVGF_COMMON_FILTER_TEXEL_GLSL
 #define ASVGF_COMMON_FILTER_TEXEL_GLSL

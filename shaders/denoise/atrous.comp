@@ -52,7 +52,7 @@ struct Tap {
 #if defined(PACKED_OUT) && !defined(PACKED_IN)
 // Step 1 only: the workgroup's 8x8 pixels and their taps lie in one 12x12 block, fetched once into
 // shared memory (colour as halves, decoded normal): 5.5 fetches a pixel instead of 58, and 2.25
-// octahedral decodes instead of 24 (docs/performance.md, step 11). Entries outside the image hold
+// octahedral decodes instead of 24 (docs/performance.md). Entries outside the image hold
 // the nearest pixel's values, which is what the variance prefilter's clamped reads want; taps skip
 // them.
 const int kApron = 2;
@@ -80,8 +80,8 @@ Tap read_tap(ivec2 q) {
 }
 float variance_at(ivec2 q) { return unpack_color_halves(tile_color[tile_index(q)]).a; }
 #elif defined(PACKED_IN)
-// Storage-buffer loads, not texel fetches: the fetches' issue rate bounded the iteration (0.081
-// against 0.097 ms at 1080p on the H200, docs/performance.md step 13).
+// Storage-buffer loads, not texel fetches: the fetches' issue rate bounded the iteration
+// (docs/performance.md).
 uvec4 texel_at(ivec2 q) { return color_in.texels[q.y * int(params.width) + q.x]; }
 Tap read_tap(ivec2 q) {
   const uvec4 t = texel_at(q);

@@ -16,8 +16,8 @@
 // One invocation per pixel, a 12x9 workgroup covering 4x3 strata (108 invocations: Vulkan and GLES
 // guarantee 128): each invocation reprojects its
 // pixel, then one invocation per stratum sums the 9 results from shared memory in pixel order (a
-// loop over the 9 pixels in one invocation per stratum ran at 3x the pass's bandwidth floor on the
-// H200: too little parallelism).
+// loop over the 9 pixels in one invocation per stratum ran at 3x the pass's bandwidth floor: too
+// little parallelism).
 layout(local_size_x = 12, local_size_y = 9) in;
 shared vec2 pixel_sums[108];  // (l_cur, l_prev) of a consistent pixel, (-1, 0) otherwise
 

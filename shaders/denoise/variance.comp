@@ -5,8 +5,8 @@
 // weighted by depth and normal only (see below). Output: rgb colour, a variance (clamped to fp16 max).
 // The 7x7 neighbours are fetched directly, only by pixels with a short history: a shared-memory
 // tile of them, loaded by any workgroup with one such pixel, cost its barriers and shared memory
-// in every workgroup (H200 1080p: 0.058 ms against 0.035 on frames with long histories, 0.275
-// against 0.295 where every pixel needs the estimate; docs/performance.md, step 16).
+// in every workgroup: it lost more on frames with long histories than it saved where every pixel
+// needs the estimate (docs/performance.md).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require

@@ -1,7 +1,7 @@
 // gradient_clear: resets this frame's gradient-sample outputs before gradient_select fills some of
 // them: per 3x3 stratum no sample (gradient_prev.y = -1) and no claim. The seed image is not
 // cleared: pathtrace reads a stratum's seed only where gradient_prev.y names the pixel (a
-// full-resolution clear ran at 2.8x its traffic floor on the H200, docs/performance.md step 15).
+// full-resolution clear ran at 2.8x its traffic floor, docs/performance.md).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 

@@ -48,7 +48,7 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   const std::uint64_t max_storage_binding = range ? range : std::uint64_t{1} << 27;  // 0: not known
   for (int i = 0; i < s.atrous_iterations; ++i) {
     // Packed filter texels between the 5x5 kernel's iterations: one load a tap (denoiser/passes/atrous.hpp).
-    // The 3x3 box's 8 taps gain less than the wider texel costs (H200 1080p: 0.068 against 0.061 ms).
+    // The 3x3 box's 8 taps gain less than the wider texel costs (measured: docs/performance.md).
     // Images too where the buffer would exceed the device's largest storage binding (Vulkan, OpenGL
     // ES and WebGPU guarantee 2^27 bytes: 4K fits, 8K does not).
     const std::string name = prefix + "atrous." + std::to_string(i + 1);
