@@ -1,13 +1,12 @@
-// `asvgf info`: what each backend finds: Vulkan devices, the OpenGL and OpenGL ES contexts, with
-// drivers, API versions and capabilities.
+// `asvgf info`: what each backend of the registry finds: its adapters (Vulkan's devices) and the
+// device it opens (the OpenGL and OpenGL ES contexts), with drivers, API versions and capabilities.
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "commands.hpp"
 #include "hal/error.hpp"
-#include "hal_gl/gl.hpp"
-#include "hal_vulkan/vulkan.hpp"
+#include "hal_registry/registry.hpp"
 
 namespace asvgf::cli {
 namespace {
@@ -16,47 +15,55 @@ const char* yes_no(bool v) {
   return v ? "yes" : "no";
 }
 
+void print_capabilities(const hal::Capabilities& c) {
+  std::printf("  ray queries:              %s\n", yes_no(c.ray_query));
+  std::printf("  acceleration structures:  %s\n", yes_no(c.acceleration_structures));
+  std::printf("  timestamps:               %s\n", yes_no(c.timestamps));
+  std::printf("  fp16 storage:             %s\n", yes_no(c.fp16_storage));
+  std::printf("  subgroup size:            %u\n", c.subgroup_size);
+  std::printf("  max image dimension:      %u\n", c.max_image_dimension);
+  std::printf("  largest storage binding:  %llu bytes\n", static_cast<unsigned long long>(c.max_storage_buffer_range));
+  std::printf("  tracing variant:          %s\n", c.ray_query ? "ray queries" : "software BVH");
+}
+
+// Every backend of the registry: the adapters it lists (where it has a choice) and the device it
+// opens, with what was actually enabled. A backend that cannot open says why and the rest go on.
 int run_info(const std::string& device) {
-  const auto adapters = hal::vulkan::list_adapters();  // throws NoDevice with a clear message
-  std::printf("Vulkan devices: %zu\n", adapters.size());
-  for (const auto& a : adapters) {
-    const auto& c = a.capabilities;
-    std::printf("\n[%u] %s\n", a.index, a.info.name.c_str());
-    std::printf("  type:                     %s\n", std::string(hal::to_string(a.info.type)).c_str());
-    std::printf("  driver:                   %s\n", a.info.driver.c_str());
-    std::printf("  API version:              %s\n", a.info.api_version.c_str());
-    std::printf("  ray queries:              %s\n", yes_no(c.ray_query));
-    std::printf("  acceleration structures:  %s\n", yes_no(c.acceleration_structures));
-    std::printf("  timestamps:               %s\n", yes_no(c.timestamps));
-    std::printf("  fp16 storage:             %s\n", yes_no(c.fp16_storage));
-    std::printf("  subgroup size:            %u\n", c.subgroup_size);
-    std::printf("  max image dimension:      %u\n", c.max_image_dimension);
-    std::printf("  tracing variant:          %s\n", c.ray_query ? "ray queries" : "software BVH");
-  }
-  // The device the renderer would use, created: what was actually enabled.
-  hal::vulkan::DeviceOptions options;
-  options.adapter = device;
-  const auto created = hal::vulkan::create_device(options);
-  const auto& c = created->capabilities();
-  std::printf("\nselected: %s (%s%s)\n", created->adapter().name.c_str(),
-              device.empty() ? "default choice" : "--device ", device.c_str());
-  std::printf("  enabled: ray queries %s, acceleration structures %s, timestamps %s, fp16 storage %s\n",
-              yes_no(c.ray_query), yes_no(c.acceleration_structures), yes_no(c.timestamps), yes_no(c.fp16_storage));
-  for (const auto flavour : {hal::gl::Flavour::Gl, hal::gl::Flavour::Gles}) {
-    const char* name = flavour == hal::gl::Flavour::Gl ? "gl" : "gles";
+  int opened = 0;
+  bool first = true;
+  for (const auto& backend : hal::registry::backends()) {
+    std::printf("%sbackend %s: %s\n", first ? "" : "\n", backend.name.c_str(), backend.description.c_str());
+    first = false;
     try {
-      hal::gl::DeviceOptions gl_options;
-      gl_options.flavour = flavour;
-      const auto gl = hal::gl::create_device(gl_options);
-      const auto& g = gl->capabilities();
-      std::printf("\nbackend %s: %s, %s\n", name, gl->adapter().name.c_str(), gl->adapter().api_version.c_str());
-      std::printf(
-          "  timestamps %s, max image dimension %u, largest storage binding %llu bytes, tracing variant "
-          "software BVH (no acceleration structures)\n",
-          yes_no(g.timestamps), g.max_image_dimension, static_cast<unsigned long long>(g.max_storage_buffer_range));
+      if (backend.list_adapters) {
+        const auto adapters = backend.list_adapters();
+        std::printf("  adapters: %zu\n", adapters.size());
+        for (const auto& a : adapters) {
+          std::printf("\n  [%u] %s\n", a.index, a.info.name.c_str());
+          std::printf("  type:                     %s\n", std::string(hal::to_string(a.info.type)).c_str());
+          std::printf("  driver:                   %s\n", a.info.driver.c_str());
+          std::printf("  API version:              %s\n", a.info.api_version.c_str());
+          print_capabilities(a.capabilities);
+        }
+      }
+      hal::registry::OpenOptions options;
+      options.adapter = device;
+      const auto created = backend.open(options);
+      std::printf("\n  opened: %s, %s (%s%s)\n", created->adapter().name.c_str(),
+                  created->adapter().api_version.c_str(),
+                  !backend.adapters_selectable ? "its one context"
+                  : device.empty()             ? "default choice"
+                                               : "--device ",
+                  backend.adapters_selectable ? device.c_str() : "");
+      print_capabilities(created->capabilities());
+      ++opened;
     } catch (const hal::Error& e) {
-      std::printf("\nbackend %s: not available: %s\n", name, e.what());
+      std::printf("  not available: %s\n", e.what());
     }
+  }
+  if (opened == 0) {
+    std::fprintf(stderr, "asvgf info: no backend could open a device (%s)\n", hal::registry::names().c_str());
+    return 1;
   }
   return 0;
 }
@@ -66,7 +73,9 @@ int run_info(const std::string& device) {
 std::function<int()> add_info_command(CLI::App& app) {
   auto device = std::make_shared<std::string>();
   auto* cmd = app.add_subcommand(
-      "info", "List the Vulkan devices and the OpenGL / ES contexts with their drivers, versions and capabilities");
+      "info",
+      "List what every backend finds (Vulkan devices, the OpenGL / ES contexts) with drivers, versions and "
+      "capabilities");
   cmd->add_option("--device", *device,
                   "Adapter to open: index or part of its name (default: $ASVGF_DEVICE, else best)");
   return [device] { return run_info(*device); };

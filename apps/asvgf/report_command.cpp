@@ -195,8 +195,7 @@ std::string command_line(const ReportOptions& o, int frames) {
                   std::to_string(o.max_accumulation_spp) + " --seed " + std::to_string(o.scene.seed);
   if (!o.methods.empty()) s += " --methods " + o.methods;
   if (o.scene.software_bvh) s += " --software-bvh";
-  const std::string backend = chosen_backend(o.scene.backend);
-  if (backend != "vulkan") s += " --backend " + backend;
+  if (!default_backend_chosen(o.scene.backend)) s += " --backend " + chosen_backend(o.scene.backend);
   if (o.timing != "auto") s += " --timing " + o.timing;
   return s;
 }
@@ -249,7 +248,7 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
   d.animation = o.scene.animation;
   d.width = base.width, d.height = base.height, d.seed = base.seed, d.frames = frames;
   d.device_name = device.adapter().name;
-  if (chosen_backend(o.scene.backend) != "vulkan") d.device_name += ", " + device.adapter().api_version;
+  if (!default_backend_chosen(o.scene.backend)) d.device_name += ", " + device.adapter().api_version;
   d.device_type = std::string(hal::to_string(device.adapter().type));
   d.cpu_device = device.adapter().type == hal::DeviceType::Cpu;
   d.timestamps = device.capabilities().timestamps;

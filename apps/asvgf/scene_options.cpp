@@ -6,10 +6,10 @@
 #include <optional>
 #include <string_view>
 
+#include "hal/error.hpp"
 #include "hal/fault.hpp"
 #include "hal/validate.hpp"
-#include "hal_gl/gl.hpp"
-#include "hal_vulkan/vulkan.hpp"
+#include "hal_registry/registry.hpp"
 #include "renderer/scene/builtin.hpp"
 #include "renderer/scene/scene_file.hpp"
 
@@ -18,17 +18,28 @@ namespace asvgf::cli {
 std::string chosen_backend(const std::string& option) {
   if (!option.empty()) return option;
   const char* env = std::getenv("ASVGF_BACKEND");
-  if (!env || !*env) return "vulkan";
+  if (!env || !*env) return hal::registry::default_backend().name;
   const std::string value = env;
-  if (value != "vulkan" && value != "gl" && value != "gles")
-    throw CLI::ValidationError("ASVGF_BACKEND", "'" + value + "' is not one of vulkan, gl, gles");
-  return value;
+  try {
+    return hal::registry::backend(value).name;
+  } catch (const hal::Error&) {
+    throw CLI::ValidationError("ASVGF_BACKEND", "'" + value + "' is not one of " + hal::registry::names());
+  }
+}
+
+bool default_backend_chosen(const std::string& option) {
+  return chosen_backend(option) == hal::registry::default_backend().name;
 }
 
 void add_backend_option(CLI::App& cmd, SceneOptions& o) {
-  cmd.add_option("--backend", o.backend,
-                 "HAL backend: vulkan, gl (OpenGL 4.5) or gles (OpenGL ES 3.1) (default: $ASVGF_BACKEND, else vulkan)")
-      ->check(CLI::IsMember({"vulkan", "gl", "gles"}));
+  std::string help = "HAL backend:";
+  std::vector<std::string> names;
+  for (const auto& b : hal::registry::backends()) {
+    help += (names.empty() ? " " : "; ") + b.name + " (" + b.description + ")";
+    names.push_back(b.name);
+  }
+  help += " (default: $ASVGF_BACKEND, else " + hal::registry::default_backend().name + ")";
+  cmd.add_option("--backend", o.backend, help)->check(CLI::IsMember(names));
 }
 
 void add_device_options(CLI::App& cmd, SceneOptions& o) {
@@ -162,16 +173,10 @@ std::unique_ptr<hal::Device> app_device(std::unique_ptr<hal::Device> backend) {
 }
 
 std::unique_ptr<hal::Device> open_device(const SceneOptions& o) {
-  const std::string backend = chosen_backend(o.backend);
-  if (backend == "gl" || backend == "gles") {
-    hal::gl::DeviceOptions options;
-    options.flavour = backend == "gl" ? hal::gl::Flavour::Gl : hal::gl::Flavour::Gles;
-    return app_device(hal::gl::create_device(options));
-  }
-  hal::vulkan::DeviceOptions options;
+  hal::registry::OpenOptions options;
   options.adapter = o.device;
   options.validation = o.validation;
-  return app_device(hal::vulkan::create_device(options));
+  return app_device(hal::registry::backend(chosen_backend(o.backend)).open(options));
 }
 
 }  // namespace asvgf::cli

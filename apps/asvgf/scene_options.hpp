@@ -18,7 +18,7 @@ struct SceneOptions {
   std::string method = "asvgf";
   std::string size = "128x128";
   std::uint32_t width = 128, height = 128;
-  std::string backend;  // vulkan, gl or gles; empty: ASVGF_BACKEND, else vulkan
+  std::string backend;  // a name of hal_registry; empty: ASVGF_BACKEND, else the registry's default
   std::string device;   // Vulkan: index or name part; empty: ASVGF_DEVICE, then the best device
   bool software_bvh = false;
   bool validation = false;
@@ -53,8 +53,10 @@ constexpr std::uint32_t kMaxImageSide = 16384;
 std::optional<ImageSize> parse_size(std::string_view text);
 // parse_size, or CLI::ValidationError naming `option`.
 ImageSize parse_size_option(const std::string& option, const std::string& text);
-// --backend, else $ASVGF_BACKEND, else "vulkan".
+// --backend, else $ASVGF_BACKEND, else the registry's default backend.
 std::string chosen_backend(const std::string& option);
+// Whether that is the registry's default backend (commands leave it out of what they print).
+bool default_backend_chosen(const std::string& option);
 // The scene the options name: built-in, or loaded from the file.
 scene::Scene load_scene(const SceneOptions& options);
 render::RenderSettings render_settings(const SceneOptions& options);

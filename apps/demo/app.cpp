@@ -25,7 +25,7 @@ scene::Scene initial_scene(const DemoOptions& o) { return cli::load_scene(o.scen
 App::App(const DemoOptions& options, WindowApi api, GLFWwindow* window, ValidationLog& log)
     : options_(options),
       window_(window),
-      device_(open_window_device(api, window, options.scene.device, options.scene.validation, log)),
+      device_(open_window_device(options.scene.backend, window, options.scene.device, options.scene.validation, log)),
       scene_(initial_scene(options)),
       settings_(cli::render_settings(options.scene)),
       input_(window) {

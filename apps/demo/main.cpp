@@ -66,15 +66,15 @@ int main(int argc, char** argv) {
       return 1;
     }
     const auto size = window_size(options);
-    const auto api = asvgf::demo::window_api(options.scene.backend);
+    const auto api = hal::registry::backend(options.scene.backend).presentation;
     asvgf::demo::set_window_hints(api);
     glfw.window = glfwCreateWindow(static_cast<int>(size.width), static_cast<int>(size.height), "asvgf-demo", nullptr,
                                    nullptr);
     if (!glfw.window) {
       std::fprintf(stderr, "asvgf-demo: could not create a window%s\n",
-                   api == asvgf::demo::WindowApi::Gl     ? " with an OpenGL 4.5 core context"
-                   : api == asvgf::demo::WindowApi::Gles ? " with an OpenGL ES 3.1 context"
-                                                         : "");
+                   api == asvgf::demo::WindowApi::OpenGlContext     ? " with an OpenGL 4.5 core context"
+                   : api == asvgf::demo::WindowApi::OpenGlEsContext ? " with an OpenGL ES 3.1 context"
+                                                                    : "");
       return 1;
     }
     asvgf::demo::App app(options, api, glfw.window, log);

@@ -6,10 +6,10 @@
 #include <utility>
 
 #include "app.hpp"
-#include "scene_options.hpp"
 #include "hal_gl/gl.hpp"
 #include "hal_vulkan/presenter.hpp"
-#include "hal_vulkan/vulkan.hpp"
+#include "hal_vulkan/vulkan.hpp"  // glfw_instance_extensions
+#include "scene_options.hpp"
 
 namespace asvgf::demo {
 namespace {
@@ -53,52 +53,43 @@ class GlWindowPresenter final : public WindowPresenter {
 
 }  // namespace
 
-WindowApi window_api(const std::string& backend) {
-  if (backend == "gl") return WindowApi::Gl;
-  if (backend == "gles") return WindowApi::Gles;
-  return WindowApi::Vulkan;
-}
-
 void set_window_hints(WindowApi api) {
-  if (api == WindowApi::Vulkan) {
+  if (api == WindowApi::VulkanSurface) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     return;
   }
-  const bool es = api == WindowApi::Gles;
+  const bool es = api == WindowApi::OpenGlEsContext;
   glfwWindowHint(GLFW_CLIENT_API, es ? GLFW_OPENGL_ES_API : GLFW_OPENGL_API);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, es ? 3 : 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, es ? 1 : 5);
   if (!es) glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
 }
 
-std::unique_ptr<hal::Device> open_window_device(WindowApi api, GLFWwindow* window, const std::string& adapter,
-                                                bool validation, ValidationLog& log) {
-  auto count = [&log](const std::string& message) {
+std::unique_ptr<hal::Device> open_window_device(const std::string& backend, GLFWwindow* window,
+                                                const std::string& adapter, bool validation, ValidationLog& log) {
+  const auto& entry = hal::registry::backend(backend);
+  hal::registry::OpenOptions options;
+  options.adapter = adapter;
+  options.validation = validation;
+  // Validation messages and OpenGL's debug-output errors (always on) count alike.
+  options.on_message = [&log](const std::string& message) {
     ++log.messages;
     std::fprintf(stderr, "%s\n", message.c_str());
   };
-  if (api != WindowApi::Vulkan) {
-    hal::gl::DeviceOptions options;
-    options.flavour = api == WindowApi::Gl ? hal::gl::Flavour::Gl : hal::gl::Flavour::Gles;
-    // GL debug output is always on: its errors count as validation messages.
-    options.on_message = count;
+  if (entry.presentation == WindowApi::VulkanSurface) {
+    options.instance_extensions = hal::vulkan::glfw_instance_extensions();
+  } else {
     options.make_current = [window] {
       if (glfwGetCurrentContext() != window) glfwMakeContextCurrent(window);
     };
     glfwMakeContextCurrent(window);
-    return cli::app_device(hal::gl::create_device(options));
   }
-  hal::vulkan::DeviceOptions options;
-  options.adapter = adapter;
-  options.validation = validation;
-  options.on_validation_message = count;
-  options.instance_extensions = hal::vulkan::glfw_instance_extensions();
-  return cli::app_device(hal::vulkan::create_device(options));
+  return cli::app_device(entry.open(options));
 }
 
 std::unique_ptr<WindowPresenter> make_window_presenter(WindowApi api, hal::Device& device, GLFWwindow* window,
                                                        bool vsync) {
-  if (api == WindowApi::Vulkan) return std::make_unique<VulkanWindowPresenter>(device, window, vsync);
+  if (api == WindowApi::VulkanSurface) return std::make_unique<VulkanWindowPresenter>(device, window, vsync);
   return std::make_unique<GlWindowPresenter>(device, window, vsync);
 }
 

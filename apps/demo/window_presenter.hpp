@@ -8,20 +8,21 @@
 #include <string>
 
 #include "hal/device.hpp"
+#include "hal_registry/registry.hpp"
 
 struct GLFWwindow;
 
 namespace asvgf::demo {
 
-enum class WindowApi { Vulkan, Gl, Gles };
-// The API for a backend name as cli::chosen_backend gives it (vulkan, gl, gles).
-WindowApi window_api(const std::string& backend);
+// How the chosen backend presents (its registry entry says).
+using WindowApi = hal::registry::Presentation;
 
-// The window hints for `api` (before glfwCreateWindow) and, after it, the device on its context.
+// The window hints for `api` (before glfwCreateWindow) and, after it, the backend's device on the
+// window (its context adopted, or the instance extensions a surface needs).
 void set_window_hints(WindowApi api);
 struct ValidationLog;
-std::unique_ptr<hal::Device> open_window_device(WindowApi api, GLFWwindow* window, const std::string& adapter,
-                                                bool validation, ValidationLog& log);
+std::unique_ptr<hal::Device> open_window_device(const std::string& backend, GLFWwindow* window,
+                                                const std::string& adapter, bool validation, ValidationLog& log);
 
 class WindowPresenter {
  public:

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "program_dump.hpp"
+
 namespace hal::gl {
 namespace {
 
@@ -160,7 +162,7 @@ ImageHandle GlDevice::create_image(const ImageDesc& desc) {
 PipelineHandle GlDevice::create_pipeline(const ComputePipelineDesc& desc) {
   make_current();
   const ShaderInfo& shader = *desc.shader;
-  const std::string_view source = context_.flavour() == Flavour::Gles ? shader.essl : shader.glsl;
+  const std::string_view source = context_.flavour() == Flavour::Gles ? shader.source("essl") : shader.source("glsl");
   if (source.empty())
     throw Error(ErrorKind::Unsupported, desc.name,
                 "shader '" + std::string(shader.name) + "' has no " +
@@ -206,6 +208,7 @@ PipelineHandle GlDevice::create_pipeline(const ComputePipelineDesc& desc) {
   }
   PipelineObject object{desc.name, desc.shader, glCreateProgram()};
   glAttachShader(object.program, compute);
+  if (program_dump_enabled()) glProgramParameteri(object.program, GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
   glLinkProgram(object.program);
   glDeleteShader(compute);
   glGetProgramiv(object.program, GL_LINK_STATUS, &ok);
@@ -215,6 +218,7 @@ PipelineHandle GlDevice::create_pipeline(const ComputePipelineDesc& desc) {
     throw Error(ErrorKind::Backend, desc.name,
                 "the GL linker rejects shader '" + std::string(shader.name) + "': " + log);
   }
+  dump_program(object.program, shader.name, source);
   return PipelineHandle{pipelines_.add(std::move(object))};
 }
 

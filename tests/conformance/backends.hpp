@@ -1,5 +1,5 @@
-// The HAL conformance suite runs on every backend registered here. A backend adds one file that
-// registers a factory (see backend_vulkan.cpp) and one test executable in CMakeLists.txt.
+// The HAL conformance suite runs on every backend registered here: the backend registry's backends
+// an executable names (backend_registry.cpp) and the recording HAL (backend_record.cpp).
 #pragma once
 
 #include <doctest/doctest.h>

@@ -1,9 +1,10 @@
 // The device a GPU test runs on, behind the HAL validation layer, whose backend messages fail the
-// test: Vulkan with validation and synchronization validation, or (in executables compiled with
-// ASVGF_TEST_BACKEND_GL = 1 for OpenGL 4.5, 2 for OpenGL ES 3.1) the OpenGL backend with its
-// debug-output errors, or (with ASVGF_TEST_BACKEND_WEBGPU) the shaders' WGSL in Dawn through the
-// test-only backend in tests/wgsl. Tests written once against it run on each backend they are
-// compiled for.
+// test: by default Vulkan with validation and synchronization validation (the Vulkan tests pass
+// their own hal::vulkan::DeviceOptions); in executables compiled with ASVGF_TEST_BACKEND="<name>",
+// the backend registry's backend of that name with its validation on (OpenGL: debug-output
+// errors); with ASVGF_TEST_BACKEND_WEBGPU, the shaders' WGSL in Dawn through the test-only backend
+// in tests/wgsl, which is not in the registry. Tests written once against it run on each backend
+// they are compiled for.
 #pragma once
 
 #include <doctest/doctest.h>
@@ -15,8 +16,8 @@
 #include "hal/hal.hpp"
 #include "hal/validate.hpp"
 #include "hal_vulkan/vulkan.hpp"
-#if defined(ASVGF_TEST_BACKEND_GL)
-#include "hal_gl/gl.hpp"
+#if defined(ASVGF_TEST_BACKEND)
+#include "hal_registry/registry.hpp"
 #endif
 #if defined(ASVGF_TEST_BACKEND_WEBGPU)
 #include "dawn_device.hpp"
@@ -31,12 +32,12 @@ struct ValidatedDevice {
     (void)options;
     device = hal::validate::wrap(hal::dawn_node::create_device(
         hal::dawn_node::build_options([this](const std::string& m) { messages.push_back(m); })));
-#elif defined(ASVGF_TEST_BACKEND_GL)
+#elif defined(ASVGF_TEST_BACKEND)
     (void)options;
-    hal::gl::DeviceOptions gl;
-    gl.flavour = ASVGF_TEST_BACKEND_GL == 2 ? hal::gl::Flavour::Gles : hal::gl::Flavour::Gl;
-    gl.on_message = [this](const std::string& m) { messages.push_back(m); };
-    device = hal::validate::wrap(hal::gl::create_device(gl));
+    hal::registry::OpenOptions open;
+    open.validation = true;
+    open.on_message = [this](const std::string& m) { messages.push_back(m); };
+    device = hal::validate::wrap(hal::registry::backend(ASVGF_TEST_BACKEND).open(open));
 #else
     options.validation = true;
     options.on_validation_message = [this](const std::string& m) { messages.push_back(m); };

@@ -45,6 +45,13 @@ struct UniformMember {
   std::uint32_t size = 0;    // bytes
 };
 
+// One translation of a shader for a backend that does not run SPIR-V, named by its language
+// ("glsl": OpenGL GLSL 450, "essl": OpenGL ES GLSL 310, with the gl_binding units). A language a
+// new port needs is one more entry the shader tool writes; no HAL header changes.
+struct ShaderSource {
+  std::string_view language;
+  std::string_view text;
+};
 
 struct ShaderInfo {
   std::string_view name;  // "<shader>" or "<shader>.<variant>"
@@ -54,10 +61,15 @@ struct ShaderInfo {
   std::uint32_t uniform_block_size = 0;  // 0: the shader has no uniform block
   std::span<const UniformMember> uniform_members;
   bool uses_ray_query = false;
-  // OpenGL GLSL 450 and ES GLSL 310 source with the gl_binding units; empty for ray-query variants.
-  std::string_view glsl;
-  std::string_view essl;
+  // Translations by language (their text empty for ray-query variants).
+  std::span<const ShaderSource> sources;
 
+  // The translation into `language`, or empty.
+  constexpr std::string_view source(std::string_view language) const {
+    for (const auto& s : sources)
+      if (s.language == language) return s.text;
+    return {};
+  }
   // The binding with this name, or nullptr.
   constexpr const ShaderBinding* find(std::string_view binding_name) const {
     for (const auto& b : bindings)

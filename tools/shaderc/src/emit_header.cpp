@@ -70,6 +70,7 @@ std::string header_text(const Options& o, const Reflection& r, const std::vector
   // Raw string literals: the delimiters cannot occur in GLSL (no ')' is followed by "glsl\"").
   h << "inline constexpr std::string_view glsl = R\"glsl(" << glsl << ")glsl\";\n\n";
   h << "inline constexpr std::string_view essl = R\"essl(" << essl << ")essl\";\n\n";
+  h << "inline constexpr std::array<hal::ShaderSource, 2> sources = {{{\"glsl\", glsl}, {\"essl\", essl}}};\n\n";
   h << "}  // namespace detail::" << id << "\n\n"
     << "inline constexpr hal::ShaderInfo " << id << " = {\n"
     << "    .name = \"" << o.full_name() << "\",\n"
@@ -80,8 +81,7 @@ std::string header_text(const Options& o, const Reflection& r, const std::vector
     << "    .uniform_block_size = " << r.uniform_block_size << ",\n"
     << "    .uniform_members = detail::" << id << "::uniform_members,\n"
     << "    .uses_ray_query = " << (r.uses_ray_query ? "true" : "false") << ",\n"
-    << "    .glsl = detail::" << id << "::glsl,\n"
-    << "    .essl = detail::" << id << "::essl,\n"
+    << "    .sources = detail::" << id << "::sources,\n"
     << "};\n\n";
   emit_uniform_structs(h, id, r);
   h << "}  // namespace asvgf::shaders\n";

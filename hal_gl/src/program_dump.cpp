@@ -1,0 +1,51 @@
+#include "program_dump.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace hal::gl {
+namespace {
+
+const char* dump_folder() {
+  const char* folder = std::getenv("ASVGF_GL_PROGRAM_DUMP");
+  return folder && *folder ? folder : nullptr;
+}
+
+bool write(const std::filesystem::path& path, const void* data, std::size_t size) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
+  out.close();
+  return static_cast<bool>(out);
+}
+
+}  // namespace
+
+bool program_dump_enabled() {
+  return dump_folder() != nullptr;
+}
+
+void dump_program(GLuint program, std::string_view shader_name, std::string_view source) {
+  const char* folder = dump_folder();
+  if (!folder) return;
+  GLint length = 0;
+  glGetProgramiv(program, GL_PROGRAM_BINARY_LENGTH, &length);
+  std::vector<char> binary(static_cast<std::size_t>(std::max(length, 0)));
+  GLenum format = 0;
+  GLsizei written = 0;
+  if (length > 0) glGetProgramBinary(program, length, &written, &format, binary.data());
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  const std::filesystem::path base = std::filesystem::path(folder) / std::string(shader_name);
+  const bool ok = written > 0 && write(base.string() + ".bin", binary.data(), static_cast<std::size_t>(written)) &&
+                  write(base.string() + ".glsl", source.data(), source.size());
+  if (!ok)
+    std::fprintf(stderr, "ASVGF_GL_PROGRAM_DUMP: could not write %s.bin/.glsl (binary of %d bytes)\n",
+                 base.string().c_str(), static_cast<int>(written));
+}
+
+}  // namespace hal::gl
