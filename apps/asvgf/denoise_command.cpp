@@ -13,9 +13,9 @@
 #include "frame_files.hpp"
 #include "frame_sequence.hpp"
 #include "input_conventions.hpp"
+#include "io/image_io.hpp"
 #include "motion_check.hpp"
 #include "progress.hpp"
-#include "io/image_io.hpp"
 #include "report/metrics.hpp"
 #include "scene_options.hpp"
 
@@ -136,7 +136,7 @@ int run_denoise(DenoiseOptions& o) {
                                        ? cycles_layer_of(render::read_exr_channel_names(color.path(o.first)))
                                        : std::string();
   const InputConventions conventions =
-      resolve_input_conventions(o.conventions, o.color_from_folder, cycles_layer, !o.motion.empty());
+      resolve_input_conventions(o.conventions, o.color_from_folder, cycles_layer, still);
   auto channels_of = [&](const char* buffer) {
     const auto it = conventions.channels.find(buffer);
     return it == conventions.channels.end() ? std::vector<std::string>{} : it->second;

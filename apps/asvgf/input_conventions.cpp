@@ -67,9 +67,9 @@ bool still_sequence(const InputConventionOptions& o, bool motion_given) {
 }
 
 InputConventions resolve_input_conventions(const InputConventionOptions& o, bool own_folder,
-                                           const std::string& cycles_layer, bool motion_given) {
+                                           const std::string& cycles_layer, bool still) {
   InputConventions c;
-  c.still = still_sequence(o, motion_given);
+  c.still = still;
   if (o.from == "cycles") {
     if (cycles_layer.empty())
       throw CLI::ValidationError("--from",

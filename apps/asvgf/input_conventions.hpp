@@ -31,7 +31,7 @@ struct InputConventions {
   std::map<std::string, std::vector<std::string>> channels;
   ColorInput color = ColorInput::Radiance;
   MotionConvention motion;
-  bool still = false;  // no motion files: every motion vector is 0 (camera and scene hold still)
+  bool still = false;            // no motion files: every motion vector is 0 (camera and scene hold still)
   std::string describe() const;  // e.g. "radiance, motion previous minus current in pixels, y up"
 };
 
@@ -39,9 +39,10 @@ struct InputConventions {
 bool still_sequence(const InputConventionOptions& o, bool motion_given);
 
 // The conventions the options name. `cycles_layer` is the view layer found in the first frame's
-// file ("ViewLayer"), used by --from cycles. Throws CLI::ValidationError naming the option.
+// file ("ViewLayer"), used by --from cycles; `still` is still_sequence's answer. Throws
+// CLI::ValidationError naming the option.
 InputConventions resolve_input_conventions(const InputConventionOptions& o, bool own_folder,
-                                           const std::string& cycles_layer, bool motion_given);
+                                           const std::string& cycles_layer, bool still);
 
 // The view layer of a Cycles multilayer file: the prefix of its "<layer>.Combined.R" channel.
 std::string cycles_layer_of(const std::vector<std::string>& channels);

@@ -10,18 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "frame_pattern.hpp"
 #include "io/image_io.hpp"
 #include "report/metrics.hpp"
-
-namespace {
-
-std::string expand(const char* pattern, int frame) {
-  std::vector<char> buffer(std::string(pattern).size() + 32);
-  std::snprintf(buffer.data(), buffer.size(), pattern, frame);
-  return buffer.data();
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 5) {
@@ -34,8 +25,8 @@ int main(int argc, char** argv) {
   double worst = 0;
   try {
     for (int f = first; f < first + count; ++f) {
-      const auto a = asvgf::render::read_exr(expand(argv[1], f));
-      const auto b = asvgf::render::read_exr(expand(argv[2], f));
+      const auto a = asvgf::render::read_exr(expand_frame_pattern(argv[1], f));
+      const auto b = asvgf::render::read_exr(expand_frame_pattern(argv[2], f));
       if (a.width != b.width || a.height != b.height) {
         std::fprintf(stderr, "exr_compare: frame %d: %ux%u against %ux%u\n", f, a.width, a.height, b.width, b.height);
         return 2;

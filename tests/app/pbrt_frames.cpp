@@ -15,15 +15,10 @@
 #include <string>
 #include <vector>
 
+#include "frame_pattern.hpp"
 #include "io/image_io.hpp"
 
 namespace {
-
-std::string expand(const char* pattern, int frame) {
-  std::vector<char> buffer(std::string(pattern).size() + 32);
-  std::snprintf(buffer.data(), buffer.size(), pattern, frame);
-  return buffer.data();
-}
 
 // The film's channels, in its order.
 // clang-format off
@@ -89,7 +84,7 @@ int main(int argc, char** argv) {
   }
   try {
     const int first = std::atoi(argv[3]), count = std::atoi(argv[4]);
-    for (int f = first; f < first + count; ++f) write_pbrt_frame(argv[1], f, expand(argv[2], f));
+    for (int f = first; f < first + count; ++f) write_pbrt_frame(argv[1], f, expand_frame_pattern(argv[2], f));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pbrt_frames: %s\n", e.what());
     return 1;
