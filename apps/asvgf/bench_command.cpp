@@ -9,9 +9,9 @@
 #include <map>
 #include <vector>
 
+#include "asvgf/pass_traffic.hpp"
 #include "commands.hpp"
 #include "copy_bandwidth.hpp"
-#include "denoiser/graph/pass_traffic.hpp"
 #include "report/sequence_metrics.hpp"
 #include "scene_options.hpp"
 

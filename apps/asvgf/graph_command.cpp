@@ -7,14 +7,14 @@
 #include <memory>
 #include <string>
 
+#include "asvgf/graph_runtime.hpp"
 #include "commands.hpp"
-#include "renderer/frame_graph.hpp"
-#include "denoiser/graph/graph_runtime.hpp"
 #include "hal/validate.hpp"
 #include "hal_record/record_device.hpp"
 #include "io/atomic_file.hpp"
-#include "renderer/scene_gpu.hpp"
+#include "renderer/frame_graph.hpp"
 #include "renderer/scene/builtin.hpp"
+#include "renderer/scene_gpu.hpp"
 #include "scene_options.hpp"
 
 namespace asvgf::cli {

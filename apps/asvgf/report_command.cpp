@@ -16,13 +16,13 @@
 
 #include "commands.hpp"
 #include "frame_files.hpp"
-#include "progress.hpp"
 #include "io/atomic_file.hpp"
+#include "progress.hpp"
+#include "renderer/scene/builtin.hpp"
+#include "renderer/scene/scene.hpp"
 #include "report/metrics.hpp"
 #include "report/report.hpp"
 #include "report/summary.hpp"
-#include "renderer/scene/builtin.hpp"
-#include "renderer/scene/scene.hpp"
 #include "scene_options.hpp"
 
 namespace asvgf::cli {
@@ -95,17 +95,17 @@ std::vector<report::RunSpec> all_runs(std::uint32_t max_accumulation_spp) {
   add("svgf", "SVGF: constant α 0.2, 5 à-trous iterations (B3 5x5)", Method::Svgf, none);
   add("asvgf", "A-SVGF: adaptive α, 5 à-trous iterations (B3 5x5)", Method::Asvgf, none);
   add("asvgf-reproj", "A-SVGF, gradient from reprojected noisy luminance (no re-shading; Q2RTX's LF)", Method::Asvgf,
-      [](report::RunSpec& s) { s.denoise.gradient_source = passes::GradientSource::Reprojected; });
+      [](report::RunSpec& s) { s.denoise.gradient_source = asvgf::GradientSource::Reprojected; });
   add("asvgf-nodemod", "A-SVGF filtering radiance with the albedo in it (--no-demodulation)", Method::Asvgf,
       [](report::RunSpec& s) { s.demodulate = false; });
   add("asvgf-split", "A-SVGF filtering diffuse and specular light apart (--specular-split)", Method::Asvgf,
       [](report::RunSpec& s) { s.specular_split = true; });
   add("asvgf-box9", "A-SVGF, the seed's 3x3 box kernel, 9 iterations", Method::Asvgf, [](report::RunSpec& s) {
-    s.denoise.kernel = passes::AtrousKernel::Box;
+    s.denoise.kernel = asvgf::AtrousKernel::Box;
     s.denoise.atrous_iterations = 9;
   });
   add("asvgf-box15", "A-SVGF, the seed's 3x3 box kernel, 15 iterations", Method::Asvgf, [](report::RunSpec& s) {
-    s.denoise.kernel = passes::AtrousKernel::Box;
+    s.denoise.kernel = asvgf::AtrousKernel::Box;
     s.denoise.atrous_iterations = 15;
   });
   for (std::uint32_t spp = 1; spp <= max_accumulation_spp; spp *= 2)

@@ -133,9 +133,9 @@ void finish_scene_options(SceneOptions& o) {
   const ImageSize size = parse_size_option("--size", o.size);
   o.width = size.width;
   o.height = size.height;
-  o.denoise.kernel = o.kernel == "box" ? passes::AtrousKernel::Box : passes::AtrousKernel::B3Spline;
+  o.denoise.kernel = o.kernel == "box" ? asvgf::AtrousKernel::Box : asvgf::AtrousKernel::B3Spline;
   o.denoise.gradient_source =
-      o.gradient_source == "reprojected" ? passes::GradientSource::Reprojected : passes::GradientSource::Reshaded;
+      o.gradient_source == "reprojected" ? asvgf::GradientSource::Reprojected : asvgf::GradientSource::Reshaded;
   if (const auto problem = check_settings(o.denoise))
     throw CLI::ValidationError(*problem->setting.option ? problem->setting.option : problem->setting.setting,
                                problem->message());

@@ -24,7 +24,7 @@ struct SceneOptions {
   bool validation = false;
   std::uint32_t seed = 0;
   std::uint32_t max_bounces = 4;
-  passes::DenoiseSettings denoise;
+  asvgf::DenoiseSettings denoise;
   std::string kernel = "b3spline";
   std::string gradient_source = "reshaded";
   bool no_demodulation = false;  // --no-demodulation: filter radiance, albedo included

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "denoiser/graph/graph_runtime.hpp"
+#include "asvgf/graph_runtime.hpp"
 
 namespace asvgf::demo {
 

@@ -6,7 +6,6 @@
 //   kernel, history_tap 0, min_history 4: SVGF paper (Schied et al. 2017) and Falcor's SVGF pass.
 //   gradient_iterations 3: Q2RTX (a-trous over the gradient at 1/3 resolution).
 //   history_cap 32: Falcor's SVGF (Q2RTX caps at 256 with alpha_min 0.02, moments alpha 0.01).
-//   adaptive on: A-SVGF (Schied, Peters, Dachsbacher 2018).
 //   specular_atrous_iterations 4: measured on `glossy` at 1080p (Q2RTX 3; docs/performance.md).
 #pragma once
 
@@ -19,35 +18,44 @@
 namespace asvgf {
 
 enum class AtrousKernel : std::uint32_t { B3Spline = 0, Box = 1 };  // values are the shader's `kernel`
-enum class Tonemap : std::uint32_t { Clamp = 0, Aces = 1 };          // values are the shader's `tonemap`
+enum class Tonemap : std::uint32_t { Clamp = 0, Aces = 1 };         // values are the shader's `tonemap`
 // Where A-SVGF's temporal gradient comes from. Reshaded: the renderer re-shades forward-projected
 // samples of last frame with last frame's random numbers (the A-SVGF paper; exact, needs the
 // renderer's help). Reprojected: estimated from this frame's noisy luminance against last frame's,
 // reprojected (Q2RTX's low-frequency gradient; no help needed, noisier).
 enum class GradientSource : std::uint32_t { Reshaded = 0, Reprojected = 1 };
 
+// Ema: temporal accumulation only; Svgf: + variance-guided a-trous filter (Schied et al. 2017);
+// Asvgf: + the temporal gradient's adaptive blend factor (Schied, Peters, Dachsbacher 2018).
+enum class DenoiseMethod { Ema, Svgf, Asvgf };
+
 struct DenoiseSettings {
-  float alpha = 0.2f;                          // colour blend factor (SVGF; the seed's figures use 0.2)
-  float moments_alpha = 0.2f;                  // moments blend factor (SVGF)
-  int atrous_iterations = 5;                   // SVGF
-  float sigma_z = 1.0f;                        // depth edge-stopping (SVGF)
-  float sigma_n = 128.0f;                      // normal edge-stopping exponent (SVGF; Q2RTX 64)
-  float sigma_l = 4.0f;                        // luminance edge-stopping (SVGF; Q2RTX 16)
+  float alpha = 0.2f;                            // colour blend factor (SVGF; the seed's figures use 0.2)
+  float moments_alpha = 0.2f;                    // moments blend factor (SVGF)
+  int atrous_iterations = 5;                     // SVGF
+  float sigma_z = 1.0f;                          // depth edge-stopping (SVGF)
+  float sigma_n = 128.0f;                        // normal edge-stopping exponent (SVGF; Q2RTX 64)
+  float sigma_l = 4.0f;                          // luminance edge-stopping (SVGF; Q2RTX 16)
   AtrousKernel kernel = AtrousKernel::B3Spline;  // 5x5 B3 spline (SVGF); Box = the seed's 3x3 box
-  int gradient_iterations = 3;                 // a-trous iterations over the 1/3-res gradient (Q2RTX)
-  float history_cap = 32.0f;                   // max history length (Falcor SVGF; Q2RTX 256)
-  int history_tap = 0;                         // a-trous iteration whose output feeds the colour history (SVGF)
-  bool adaptive = true;                        // A-SVGF's gradient-driven alpha; false: constant alpha
+  int gradient_iterations = 3;                   // a-trous iterations over the 1/3-res gradient (Q2RTX)
+  float history_cap = 32.0f;                     // max history length (Falcor SVGF; Q2RTX 256)
+  int history_tap = 0;                           // a-trous iteration whose output feeds the colour history (SVGF)
   GradientSource gradient_source = GradientSource::Reshaded;  // A-SVGF's gradient (see above)
-  float min_history = 4.0f;                    // below this, variance is estimated spatially (SVGF)
-  float exposure = 1.0f;                       // composite: multiplier before the tone curve
-  Tonemap tonemap = Tonemap::Aces;             // composite: ACES fit (Narkowicz 2015)
+  float min_history = 4.0f;                                   // below this, variance is estimated spatially (SVGF)
+  float exposure = 1.0f;                                      // composite: multiplier before the tone curve
+  Tonemap tonemap = Tonemap::Aces;                            // composite: ACES fit (Narkowicz 2015)
   // A-trous iterations over the specular signal, where diffuse and specular light are filtered
   // apart (--specular-split): Q2RTX filters its specular channel less than its diffuse one
   // (flt_atrous_spec 3 against flt_atrous_hf 4), as a reflection has detail that normals and depth
   // do not predict; 4 measured best of 2-5 at 1080p (3 at 128 and 256 px).
   int specular_atrous_iterations = 4;
 };
+
+// Whether `method` with `settings` reads gradient samples the renderer re-shaded (A-SVGF with
+// GradientSource::Reshaded): the renderer then selects and re-shades them on frames where something moved.
+inline bool reshades_gradients(DenoiseMethod method, const DenoiseSettings& settings) {
+  return method == DenoiseMethod::Asvgf && settings.gradient_source == GradientSource::Reshaded;
+}
 
 // The one check of every setting, used by asvgf::Denoiser, the renderer and every command of the
 // `asvgf` tool and the demo: a setting outside its range, NaN or infinite is refused naming the

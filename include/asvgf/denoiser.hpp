@@ -74,10 +74,6 @@ inline bool is_background(double depth, const std::array<double, 3>& normal) {
   return is_background_depth(depth) || !std::isfinite(l1) || !(l1 >= 1e-30);
 }
 
-// Ema: temporal accumulation only; Svgf: + variance-guided a-trous filter (Schied et al. 2017);
-// Asvgf: + the temporal gradient's adaptive blend factor (Schied, Peters, Dachsbacher 2018).
-enum class DenoiseMethod { Ema, Svgf, Asvgf };
-
 // An image of yours: its handle, its format, and the state it is in when the frame's commands run.
 struct DenoiserImage {
   hal::ImageHandle image;
@@ -87,8 +83,8 @@ struct DenoiserImage {
 
 struct DenoiserInputs {
   DenoiserImage illumination, albedo, normal, depth, motion;  // illumination: the `color` above
-  std::optional<DenoiserImage> gradient_samples;  // A-SVGF; see the table above
-  bool camera_cut = false;                        // true: forget every history before this frame
+  std::optional<DenoiserImage> gradient_samples;              // A-SVGF; see the table above
+  bool camera_cut = false;                                    // true: forget every history before this frame
 };
 
 struct DenoiserOutputs {
@@ -136,7 +132,7 @@ inline std::array<float, 2> motion_scale(const MotionConvention& c, std::uint32_
 struct DenoiserConfig {
   std::uint32_t width = 0, height = 0;
   DenoiseMethod method = DenoiseMethod::Asvgf;
-  DenoiseSettings settings;           // `adaptive` is set from the method
+  DenoiseSettings settings;
   bool depth_gradient_given = false;  // depth.y holds the depth gradient
   ColorInput color_input = ColorInput::Radiance;
   MotionConvention motion;

@@ -1,6 +1,6 @@
 #include "renderer/aov_passes.hpp"
 
-#include "denoiser/graph/graph_runtime.hpp"
+#include "asvgf/graph_runtime.hpp"
 #include "shaders/export_aovs.hpp"
 
 namespace asvgf::passes {

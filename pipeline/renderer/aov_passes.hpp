@@ -1,12 +1,12 @@
 // renderer/aov_passes.hpp: the frame's denoiser inputs exported in the public API's conventions
 // (include/asvgf/denoiser.hpp), for `asvgf render --aovs`: an export pass for depth, normal and
-// albedo (shaders/frame/export_aovs.comp) and plain copies for the rest.
+// albedo (shaders/renderer/export_aovs.comp) and plain copies for the rest.
 #pragma once
 
 #include <string>
 
-#include "denoiser/graph/render_graph.hpp"
-#include "denoiser/passes/compute_pass.hpp"
+#include "asvgf/compute_pass.hpp"
+#include "asvgf/render_graph.hpp"
 
 namespace asvgf::passes {
 

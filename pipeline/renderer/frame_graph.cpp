@@ -29,10 +29,30 @@ std::string_view to_string(Method method) {
   return "?";
 }
 
+std::optional<DenoiseMethod> denoise_method(Method method) {
+  switch (method) {
+    case Method::Ema:
+      return DenoiseMethod::Ema;
+    case Method::Svgf:
+      return DenoiseMethod::Svgf;
+    case Method::Asvgf:
+      return DenoiseMethod::Asvgf;
+    case Method::Raw:
+    case Method::Reference:
+      break;
+  }
+  return std::nullopt;
+}
+
 std::optional<Method> method_from_string(std::string_view name) {
   for (Method m : kAllMethods)
     if (to_string(m) == name) return m;
   return std::nullopt;
+}
+
+bool reshades_gradients(const FrameSettings& s) {
+  const std::optional<DenoiseMethod> method = denoise_method(s.method);
+  return method && asvgf::reshades_gradients(*method, s.denoise) && s.scene_moved;
 }
 
 FrameGraphBuilder::FrameGraphBuilder(hal::Device& device) : pipelines_(device), counters_(device) {}
@@ -43,8 +63,8 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const std::uint32_t w = s.width, h = s.height;
   const std::uint32_t gw = (w + 2) / 3, gh = (h + 2) / 3;  // one gradient sample per 3x3 stratum
   using F = hal::Format;
-  passes::DenoiseSettings denoise = s.denoise;
-  denoise.adaptive = s.method == Method::Asvgf;
+  const DenoiseSettings& denoise = s.denoise;
+  const std::optional<DenoiseMethod> method = denoise_method(s.method);
 
   const passes::SceneInputs scene = passes::import_scene(g, scene_gpu, w, h);
   const ResourceId hdr = g.import("hdr", targets.hdr, targets.hdr_state, w, h, F::RGBA32F);
@@ -63,9 +83,8 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const ResourceId albedo = g.add_image("albedo", w, h, F::RGBA16F);
   // Two signals only where a second chain has something to filter and every consumer of the
   // illumination knows the split: the reprojected gradient and the AOVs read one signal.
-  const bool split = s.specular_split && scene_gpu.glossy() &&
-                     (s.method == Method::Ema || s.method == Method::Svgf || s.method == Method::Asvgf) &&
-                     !(s.method == Method::Asvgf && denoise.gradient_source == passes::GradientSource::Reprojected) &&
+  const bool split = s.specular_split && scene_gpu.glossy() && method &&
+                     !(method == DenoiseMethod::Asvgf && denoise.gradient_source == GradientSource::Reprojected) &&
                      !targets.aovs;
   std::optional<ResourceId> specular, specular_albedo;
   if (split) {
@@ -78,11 +97,11 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   // A-SVGF's temporal gradient: forward-projected samples, then delta and Delta at 1/3 resolution.
   const std::string not_moved = "nothing in the scene, camera or lights moved since the last frame";
   // Re-shaded samples only for GradientSource::Reshaded; Reprojected estimates inside add_denoiser.
-  const bool adaptive = denoise.adaptive && denoise.gradient_source == passes::GradientSource::Reshaded;
-  const bool gradients = adaptive && s.scene_moved;
+  const bool reshaded = method && asvgf::reshades_gradients(*method, denoise);
+  const bool gradients = reshades_gradients(s);
   std::optional<passes::CarriedSamples> carried;
   ResourceId gradient_prev = 0;
-  if (adaptive) {
+  if (reshaded) {
     gradient_prev = g.add_image("gradient_prev_luminance", gw, gh, F::RGBA32F);  // xy used
     carried = {g.add_image("gradient_seeds", gw, gh, F::RGBA32Uint), gradient_prev};
     const ResourceId claims = g.add_buffer("gradient_claims", std::uint64_t(gw) * gh * 4);
@@ -104,15 +123,12 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
     passes::add_accumulate(g, pipelines_, illumination, accumulation, s.accumulation_valid, w, h);
     input = accumulation;
   }
-  const passes::Filter filter = s.method == Method::Raw || s.method == Method::Reference ? passes::Filter::None
-                                : s.method == Method::Ema                                ? passes::Filter::Temporal
-                                                          : passes::Filter::Spatiotemporal;
-  const passes::DenoiserOutputs denoised =
+  const passes::GraphDenoiserOutputs denoised =
       passes::add_denoiser(g, pipelines_,
                            {input, motion, depth_normal, albedo, counters, hdr, display,
-                            adaptive ? std::optional(gradient_prev) : std::nullopt, gradients ? "" : not_moved,
+                            reshaded ? std::optional(gradient_prev) : std::nullopt, gradients ? "" : not_moved,
                             specular, specular_albedo, specular_motion},
-                           denoise, filter);
+                           denoise, method);
   g.output(hdr, hal::State::CopySrc);
   g.output(display, hal::State::CopySrc);
 

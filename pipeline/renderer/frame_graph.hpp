@@ -14,17 +14,18 @@
 #include <optional>
 #include <string>
 
-#include "denoiser/graph/render_graph.hpp"
-#include "denoiser/passes/compute_pass.hpp"
-#include "denoiser/passes/denoise_settings.hpp"
-#include "denoiser/passes/denoise_passes.hpp"
+#include "asvgf/denoiser_graph.hpp"
+#include "asvgf/render_graph.hpp"
 #include "renderer/render_passes.hpp"
-#include "denoiser/passes/temporal.hpp"
 #include "renderer/scene_gpu.hpp"
 
 namespace asvgf::frame {
 
+// What the frame shows: the noisy samples (raw), one of the denoiser's methods, or the accumulated
+// ground truth (reference).
 enum class Method { Raw, Ema, Svgf, Asvgf, Reference };
+// The denoiser's method behind `method`; nothing for raw and reference (no filter).
+std::optional<DenoiseMethod> denoise_method(Method method);
 std::string_view to_string(Method method);
 std::optional<Method> method_from_string(std::string_view name);
 inline constexpr Method kAllMethods[] = {Method::Raw, Method::Ema, Method::Svgf, Method::Asvgf, Method::Reference};
@@ -35,8 +36,8 @@ struct FrameConfig {
   std::uint32_t width = 128, height = 128;
   std::uint32_t spp = 1;  // samples per pixel (reference: of each frame; FrameSettings: of this batch)
   std::uint32_t max_bounces = 4;
-  std::uint32_t seed = 0;                       // --seed
-  passes::DenoiseSettings denoise;              // `adaptive` is set from the method (on for asvgf only)
+  std::uint32_t seed = 0;  // --seed
+  DenoiseSettings denoise;
   std::optional<passes::DebugView> debug_view;  // also produce this intermediate-buffer view (demo)
   // False (--no-demodulation): the denoiser filters radiance with the albedo in it, not
   // illumination = radiance / albedo (the seed's question: does filtering blur textures?).
@@ -55,6 +56,10 @@ struct FrameSettings : FrameConfig {
   std::uint32_t frame = 0;          // frame index: decorrelates random numbers
   bool accumulation_valid = false;  // reference: last frame's accumulation continues
 };
+
+// Whether this frame selects and re-shades A-SVGF's gradient samples (the gradient passes run and
+// AovTargets::gradient_samples is written): A-SVGF with re-shaded gradients, and something moved.
+bool reshades_gradients(const FrameSettings& settings);
 
 // One caller-owned image and the state it is in when the frame starts.
 struct ImageTarget {

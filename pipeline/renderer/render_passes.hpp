@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
-#include "denoiser/passes/compute_pass.hpp"
-#include "denoiser/passes/denoise_settings.hpp"
+#include "asvgf/compute_pass.hpp"
+#include "asvgf/denoise_settings.hpp"
 #include "renderer/scene_gpu.hpp"
 
 namespace asvgf::passes {
@@ -60,12 +60,12 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
                    std::optional<SpecularTargets> specular = std::nullopt);
 
 struct GradientSelectTargets {
-  graph::ResourceId visibility;    // persistent: last frame's version is read
-  graph::ResourceId rng_seed;      // persistent: last frame's version is read
-  graph::ResourceId illumination;  // persistent: last frame's version is read
-  graph::ResourceId depth_normal;  // this frame's
-  graph::ResourceId claims;        // transient buffer, one uint per stratum
-  CarriedSamples carried;          // stratum-sized
+  graph::ResourceId visibility;     // persistent: last frame's version is read
+  graph::ResourceId rng_seed;       // persistent: last frame's version is read
+  graph::ResourceId illumination;   // persistent: last frame's version is read
+  graph::ResourceId depth_normal;   // this frame's
+  graph::ResourceId claims;         // transient buffer, one uint per stratum
+  CarriedSamples carried;           // stratum-sized
   bool luminance_in_alpha = false;  // illumination holds pathtrace's split signals
 };
 // Three passes: gradient_clear, gradient_select (bids), gradient_resolve (the winners write). Left
@@ -74,7 +74,7 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
                          const GradientSelectTargets& targets, std::uint32_t frame, std::uint32_t width,
                          std::uint32_t height, const std::string& skip_reason);
 
-// The specular history's motion through each pixel's reflection (shaders/frame/specular_motion.comp):
+// The specular history's motion through each pixel's reflection (shaders/renderer/specular_motion.comp):
 // reads depth_normal, motion and pathtrace's split `specular` (a: the reflected ray's length), writes
 // `target` (RGBA32F, xy).
 void add_specular_motion(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
@@ -86,7 +86,7 @@ void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::
                     graph::ResourceId accumulation, bool history_valid, std::uint32_t width, std::uint32_t height);
 
 // The demo's view of an intermediate buffer.
-// The last four are the denoiser's state as heat maps (shaders/frame/debug_view.comp): A-SVGF's
+// The last four are the denoiser's state as heat maps (shaders/renderer/debug_view.comp): A-SVGF's
 // temporal gradient lambda, the temporal blend factor alpha, the luminance standard deviation that
 // steers the a-trous filter, the history length; black where the method has no such buffer.
 enum class DebugView : std::uint32_t {

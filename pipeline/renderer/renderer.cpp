@@ -48,22 +48,25 @@ Renderer::Renderer(hal::Device& device, const scene::Scene& scene, const RenderS
   targets_.ray_counter = device.create_buffer(
       {"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopySrc | hal::BufferUsage::CopyDst});
   if (settings.debug_view)
-    targets_.debug = device.create_image({"debug_view", settings.width, settings.height, hal::Format::RGBA8Unorm, usage});
+    targets_.debug =
+        device.create_image({"debug_view", settings.width, settings.height, hal::Format::RGBA8Unorm, usage});
   if (settings.aovs) create_aov_targets();
 }
 
 void Renderer::create_aov_targets() {
   if (settings_.method == frame::Method::Reference)
-    throw hal::Error(hal::ErrorKind::InvalidUsage, "renderer AOVs", "the reference method has no denoiser inputs to export");
-  const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc |
-                     hal::ImageUsage::CopyDst;
+    throw hal::Error(hal::ErrorKind::InvalidUsage, "renderer AOVs",
+                     "the reference method has no denoiser inputs to export");
+  const auto usage =
+      hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc | hal::ImageUsage::CopyDst;
   const std::uint32_t w = settings_.width, h = settings_.height;
   auto image = [&](const char* name, std::uint32_t iw, std::uint32_t ih) {
     return frame::ImageTarget{device_.create_image({name, iw, ih, hal::Format::RGBA32F, usage})};
   };
-  targets_.aovs = frame::AovTargets{image("aov.illumination", w, h), image("aov.albedo", w, h),
-                                    image("aov.normal", w, h),       image("aov.depth", w, h),
-                                    image("aov.motion", w, h),       image("aov.gradient_samples", (w + 2) / 3, (h + 2) / 3)};
+  targets_.aovs =
+      frame::AovTargets{image("aov.illumination", w, h), image("aov.albedo", w, h),
+                        image("aov.normal", w, h),       image("aov.depth", w, h),
+                        image("aov.motion", w, h),       image("aov.gradient_samples", (w + 2) / 3, (h + 2) / 3)};
 }
 
 void Renderer::destroy_aov_targets() {
@@ -158,8 +161,7 @@ FrameImages Renderer::render(int frame) {
   const std::array<std::uint32_t, 4> zero{};
   device_.upload_buffer(targets_.ray_counter, 0, std::as_bytes(std::span(zero)));
   targets_.ray_counter_state = hal::State::CopyDst;
-  const bool gradient_ran = settings_.method == frame::Method::Asvgf &&
-                            settings_.denoise.gradient_source == passes::GradientSource::Reshaded && moved && !first;
+  bool gradient_ran = false;
   for (std::uint32_t b = 0; b < batches; ++b) {
     frame::FrameSettings s;
     static_cast<frame::FrameConfig&>(s) = settings_;
@@ -167,6 +169,7 @@ FrameImages Renderer::render(int frame) {
     s.scene_moved = moved && !first;
     s.frame = static_cast<std::uint32_t>(frame) * 4096u + b;
     s.accumulation_valid = b > 0 || continue_mean;
+    gradient_ran = frame::reshades_gradients(s);
     last_graph_.emplace(builder_.build(s, scene_gpu_, targets_));
     last_compiled_.emplace(runtime_.compile(*last_graph_));
     commands_->reset();

@@ -6,10 +6,10 @@
 #include <optional>
 #include <vector>
 
+#include "asvgf/graph_runtime.hpp"
 #include "renderer/frame_graph.hpp"
-#include "denoiser/graph/graph_runtime.hpp"
-#include "renderer/scene_gpu.hpp"
 #include "renderer/scene/scene.hpp"
+#include "renderer/scene_gpu.hpp"
 
 namespace asvgf::render {
 

@@ -190,7 +190,7 @@ std::string report_csv(const ReportData& data) {
           << (temporal ? num(s.denoise.alpha) : "") << ","
           << (temporal ? (s.method == frame::Method::Asvgf ? "1" : "0") : "") << ","
           << (filtered ? std::to_string(s.denoise.atrous_iterations) : "") << ","
-          << (filtered ? (s.denoise.kernel == passes::AtrousKernel::Box ? "box" : "b3spline") : "") << "," << f.frame
+          << (filtered ? (s.denoise.kernel == asvgf::AtrousKernel::Box ? "box" : "b3spline") : "") << "," << f.frame
           << "," << num(f.relmse) << "," << num(f.ssim) << "," << num(f.temporal) << "," << num(f.mean) << ","
           << num(f.reference_mean) << "," << (f.gpu_ms ? num(*f.gpu_ms) : "");
       for (const auto& p : passes) {

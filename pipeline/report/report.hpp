@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "asvgf/denoise_settings.hpp"
 #include "renderer/frame_graph.hpp"
-#include "denoiser/passes/denoise_settings.hpp"
 #include "report/plot.hpp"
 #include "report/sequence_metrics.hpp"
 
@@ -23,8 +23,8 @@ struct RunSpec {
   std::string description;  // one line for the tables
   frame::Method method = frame::Method::Asvgf;
   std::uint32_t spp = 1;
-  passes::DenoiseSettings denoise;
-  bool demodulate = true;  // false: the denoiser filters radiance, albedo included (--no-demodulation)
+  asvgf::DenoiseSettings denoise;
+  bool demodulate = true;       // false: the denoiser filters radiance, albedo included (--no-demodulation)
   bool specular_split = false;  // glossy scenes: diffuse and specular filtered apart (--specular-split)
   bool accumulation() const { return method == frame::Method::Reference; }
   // Frames until the temporal history is saturated (alpha_eff = max(alpha, 1/n) reaches alpha);

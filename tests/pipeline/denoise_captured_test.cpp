@@ -4,11 +4,12 @@
 // arithmetic (1e-5 x the magnitude of what is summed).
 #include <doctest/doctest.h>
 
-#include "frame_inputs.hpp"
+#include "asvgf/sanitize_counters.hpp"
+#include "cpu_oracle/denoise_reference.hpp"
 #include "denoiser/passes/atrous.hpp"
 #include "denoiser/passes/temporal.hpp"
+#include "frame_inputs.hpp"
 #include "pipeline/denoise_harness.hpp"
-#include "cpu_oracle/denoise_reference.hpp"
 #include "renderer/scene/builtin.hpp"
 #include "vulkan/validated_device.hpp"
 
@@ -57,7 +58,7 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
 
   SUBCASE("temporal (constant alpha) reprojects along the captured motion") {
     passes::PipelineCache pipelines(*device);
-    passes::DenoiseSettings settings;
+    asvgf::DenoiseSettings settings;
     passes::SanitizeCounters counters(*device);
     GraphHarness harness(*device);
     const ImageD prev_dn = to_image(prev.depth_normal), dn_now = to_image(cur.depth_normal);
@@ -65,7 +66,8 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
     ImageD prev_moments(kW, kH, 4);
     for (int y = 0; y < kH; ++y)
       for (int x = 0; x < kW; ++x) {
-        const double l = 0.2126 * prev_color.at(x, y, 0) + 0.7152 * prev_color.at(x, y, 1) + 0.0722 * prev_color.at(x, y, 2);
+        const double l =
+            0.2126 * prev_color.at(x, y, 0) + 0.7152 * prev_color.at(x, y, 1) + 0.0722 * prev_color.at(x, y, 2);
         prev_moments.at(x, y, 0) = l;
         prev_moments.at(x, y, 1) = l * l;
         prev_moments.at(x, y, 2) = 4;
@@ -112,7 +114,7 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
 
   SUBCASE("atrous (B3 spline) at steps 1, 2 and 4") {
     passes::PipelineCache pipelines(*device);
-    passes::DenoiseSettings settings;
+    asvgf::DenoiseSettings settings;
     const ImageD dn = to_image(cur.depth_normal);
     const ImageD color = with_variance(cur.illumination);
     for (int iteration = 0; iteration < 3; ++iteration) {
@@ -121,7 +123,7 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
       RenderGraph g;
       const auto out = g.add_image("atrous_out", kW, kH, F::RGBA16F);
       passes::AtrousResources res{harness.input(g, "color_in", color, F::RGBA16F),
-                                        harness.input(g, "depth_normal", dn, F::RGBA32F), out, std::nullopt};
+                                  harness.input(g, "depth_normal", dn, F::RGBA32F), out, std::nullopt};
       passes::add_atrous(g, pipelines, res, iteration, settings);
       ImageD got;
       harness.readback(g, out, &got);

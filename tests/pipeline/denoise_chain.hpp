@@ -6,8 +6,7 @@
 
 #include <optional>
 
-#include "denoiser/passes/denoise_passes.hpp"
-#include "denoiser/passes/temporal.hpp"
+#include "asvgf/denoiser_graph.hpp"
 #include "pipeline/denoise_harness.hpp"
 
 namespace denoise_test {
@@ -26,11 +25,11 @@ struct FrameOutput {
 
 class DenoiserChain {
  public:
-  DenoiserChain(hal::Device& device, asvgf::passes::DenoiseSettings settings)
+  DenoiserChain(hal::Device& device, asvgf::DenoiseSettings settings)
       : settings_(settings), pipelines_(device), harness_(device), counters_(device) {}
 
   asvgf::passes::SanitizeCounters& counters() { return counters_; }
-  asvgf::passes::DenoiseSettings& settings() { return settings_; }
+  asvgf::DenoiseSettings& settings() { return settings_; }
   // A camera cut: no history is valid next frame.
   void reset_histories() { harness_.runtime().reset_histories(); }
 
@@ -41,7 +40,7 @@ class DenoiserChain {
     asvgf::graph::RenderGraph g;
     const auto dn = g.add_image("depth_normal", w, h, Format::RGBA32F, asvgf::graph::Lifetime::Persistent);
     harness_.fill(g, dn, in.depth_normal);
-    asvgf::passes::DenoiserInputs d;
+    asvgf::passes::GraphDenoiserInputs d;
     d.illumination = harness_.input(g, "illumination", in.illumination, Format::RGBA32F);
     d.motion = harness_.input(g, "motion", in.motion, Format::RG32F);
     d.depth_normal = dn;
@@ -51,7 +50,7 @@ class DenoiserChain {
     d.display = g.add_image("display", w, h, Format::RGBA8Unorm);
     if (in.gradient_prev) d.gradient_prev = harness_.input(g, "gradient_prev", *in.gradient_prev, Format::RG32F);
     const bool spatial = settings_.atrous_iterations > 0;
-    const auto out = asvgf::passes::add_denoiser(g, pipelines_, d, settings_, asvgf::passes::Filter::Spatiotemporal);
+    const auto out = asvgf::passes::add_denoiser(g, pipelines_, d, settings_, asvgf::DenoiseMethod::Asvgf);
     FrameOutput result;
     harness_.readback(g, d.hdr, &result.hdr);
     harness_.readback(g, d.display, &result.display);
@@ -65,7 +64,7 @@ class DenoiserChain {
   }
 
  private:
-  asvgf::passes::DenoiseSettings settings_;
+  asvgf::DenoiseSettings settings_;
   asvgf::passes::PipelineCache pipelines_;
   GraphHarness harness_;
   asvgf::passes::SanitizeCounters counters_;

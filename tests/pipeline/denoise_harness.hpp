@@ -19,10 +19,10 @@
 #include <string>
 #include <vector>
 
-#include "denoiser/graph/graph_runtime.hpp"
-#include "hal/hal.hpp"
+#include "asvgf/graph_runtime.hpp"
 #include "cpu_oracle/image.hpp"
 #include "cpu_oracle/octahedral.hpp"
+#include "hal/hal.hpp"
 
 namespace denoise_test {
 
@@ -35,7 +35,7 @@ inline std::uint16_t float_to_half(float f) {  // round to nearest even; overflo
   const std::uint32_t abs = x & 0x7fffffffu;
   if (abs >= 0x7f800000u) return static_cast<std::uint16_t>(sign | 0x7c00u | (abs > 0x7f800000u ? 0x200u : 0u));
   if (abs >= 0x477ff000u) return static_cast<std::uint16_t>(sign | 0x7c00u);
-  if (abs < 0x38800000u) {  // subnormal half (or zero)
+  if (abs < 0x38800000u) {                                         // subnormal half (or zero)
     const float scaled = std::bit_cast<float>(abs) * 16777216.0f;  // exact: times 2^24
     return static_cast<std::uint16_t>(sign | static_cast<std::uint32_t>(std::nearbyint(scaled)));
   }
@@ -45,9 +45,12 @@ inline std::uint16_t float_to_half(float f) {  // round to nearest even; overflo
 inline float half_to_float(std::uint16_t h) {
   const std::uint32_t sign = (h & 0x8000u) << 16, exp = (h >> 10) & 0x1fu, man = h & 0x3ffu;
   float v;
-  if (exp == 0) v = std::ldexp(static_cast<float>(man), -24);
-  else if (exp == 31) v = man ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
-  else v = std::ldexp(static_cast<float>(man | 0x400u), static_cast<int>(exp) - 25);
+  if (exp == 0)
+    v = std::ldexp(static_cast<float>(man), -24);
+  else if (exp == 31)
+    v = man ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
+  else
+    v = std::ldexp(static_cast<float>(man | 0x400u), static_cast<int>(exp) - 25);
   return sign ? -v : v;
 }
 // One fp16 ulp at magnitude |v| (the error of one fp16 store, rounded either way).
@@ -67,17 +70,22 @@ inline std::vector<std::byte> encode(const ImageD& img, hal::Format format) {
       for (std::uint32_t c = 0; c < channels; ++c) {
         const double v = static_cast<int>(c) < img.channels ? img.at(x, y, static_cast<int>(c)) : 0.0;
         switch (format) {
-          case hal::Format::R16F: case hal::Format::RG16F: case hal::Format::RGBA16F: {
+          case hal::Format::R16F:
+          case hal::Format::RG16F:
+          case hal::Format::RGBA16F: {
             const std::uint16_t h = float_to_half(static_cast<float>(v));
             std::memcpy(out.data() + at, &h, 2), at += 2;
             break;
           }
-          case hal::Format::R8Unorm: case hal::Format::RGBA8Unorm: {
+          case hal::Format::R8Unorm:
+          case hal::Format::RGBA8Unorm: {
             const auto b = static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
             std::memcpy(out.data() + at, &b, 1), at += 1;
             break;
           }
-          case hal::Format::R32Uint: case hal::Format::RG32Uint: case hal::Format::RGBA32Uint: {
+          case hal::Format::R32Uint:
+          case hal::Format::RG32Uint:
+          case hal::Format::RGBA32Uint: {
             const auto u = static_cast<std::uint32_t>(v);
             std::memcpy(out.data() + at, &u, 4), at += 4;
             break;
@@ -99,13 +107,16 @@ inline ImageD decode(std::span<const std::byte> bytes, int w, int h, hal::Format
     for (int x = 0; x < w; ++x)
       for (int c = 0; c < channels; ++c) {
         switch (format) {
-          case hal::Format::R16F: case hal::Format::RG16F: case hal::Format::RGBA16F: {
+          case hal::Format::R16F:
+          case hal::Format::RG16F:
+          case hal::Format::RGBA16F: {
             std::uint16_t v;
             std::memcpy(&v, bytes.data() + at, 2), at += 2;
             out.at(x, y, c) = half_to_float(v);
             break;
           }
-          case hal::Format::R8Unorm: case hal::Format::RGBA8Unorm: {
+          case hal::Format::R8Unorm:
+          case hal::Format::RGBA8Unorm: {
             out.at(x, y, c) = static_cast<double>(static_cast<std::uint8_t>(bytes[at])) / 255.0, at += 1;
             break;
           }
@@ -182,8 +193,9 @@ inline ImageD random_depth_normal(Random& r, int w, int h, double miss = 0.05) {
       dn.at(x, y, 0) = static_cast<float>(3.0 + 0.02 * x + 0.03 * y + step + r.uniform(0, 0.01));
       dn.at(x, y, 1) = static_cast<float>(r.uniform(0.0, 0.06));
       std::array<float, 3> n{static_cast<float>(r.uniform(-0.3, 0.3)), static_cast<float>(r.uniform(-0.3, 0.3)), 1.0f};
-      if (r.chance(0.1)) n = {static_cast<float>(r.uniform(-1, 1)), static_cast<float>(r.uniform(-1, 1)),
-                              static_cast<float>(r.uniform(-1, 1))};
+      if (r.chance(0.1))
+        n = {static_cast<float>(r.uniform(-1, 1)), static_cast<float>(r.uniform(-1, 1)),
+             static_cast<float>(r.uniform(-1, 1))};
       if (std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]) < 1e-3f) n = {0, 0, 1};
       const auto e = asvgf::reference::oct_encode<float>(n);
       dn.at(x, y, 2) = e[0];
@@ -222,10 +234,10 @@ inline Compare compare(const ImageD& got, const ImageD& want, int channels,
       }
   return out;
 }
-#define DENOISE_CHECK_CLOSE(result, what)                                                                         \
+#define DENOISE_CHECK_CLOSE(result, what)                                                                          \
   CHECK_MESSAGE((result).worst_ratio <= 1.0, what << ": worst at (" << (result).worst_x << "," << (result).worst_y \
-                                                  << ") channel " << (result).worst_c << ": got " << (result).got    \
-                                                  << ", want " << (result).want << " (" << (result).worst_ratio       \
+                                                  << ") channel " << (result).worst_c << ": got " << (result).got  \
+                                                  << ", want " << (result).want << " (" << (result).worst_ratio    \
                                                   << " x tolerance)")
 
 // ---- Running graphs on a device ----------------------------------------------------------------
@@ -247,8 +259,8 @@ class GraphHarness {
   // A transient image of the graph holding `data` (uploaded, then copied in by a pass), read by passes.
   asvgf::graph::ResourceId input(asvgf::graph::RenderGraph& g, const std::string& name, const ImageD& data,
                                  hal::Format format) {
-    const auto id = g.add_image(name, static_cast<std::uint32_t>(data.width), static_cast<std::uint32_t>(data.height),
-                                format);
+    const auto id =
+        g.add_image(name, static_cast<std::uint32_t>(data.width), static_cast<std::uint32_t>(data.height), format);
     fill(g, id, data);
     return id;
   }
@@ -263,7 +275,9 @@ class GraphHarness {
     g.add_pass("fill." + decl.name)
         .read(src, asvgf::graph::Use::CopySrc)
         .write(target, asvgf::graph::Use::CopyDst)
-        .execute([src, target](asvgf::graph::PassContext& ctx) { ctx.commands().copy_image(ctx.image(src), ctx.image(target)); });
+        .execute([src, target](asvgf::graph::PassContext& ctx) {
+          ctx.commands().copy_image(ctx.image(src), ctx.image(target));
+        });
     if (decl.lifetime == asvgf::graph::Lifetime::Persistent) g.output(target);
   }
   // After run(), `*out` holds the resource's contents (as doubles, 4 channels at least).

@@ -12,6 +12,8 @@
 #include <doctest/doctest.h>
 
 #include "asvgf/denoiser.hpp"
+#include "asvgf/sanitize_counters.hpp"
+#include "cpu_oracle/denoise_reference.hpp"
 #include "denoiser/passes/atrous.hpp"
 #include "denoiser/passes/composite.hpp"
 #include "denoiser/passes/convert_inputs.hpp"
@@ -21,7 +23,6 @@
 #include "denoiser/passes/temporal.hpp"
 #include "denoiser/passes/variance.hpp"
 #include "pipeline/denoise_harness.hpp"
-#include "cpu_oracle/denoise_reference.hpp"
 #include "vulkan/validated_device.hpp"
 
 using namespace denoise_test;
@@ -142,7 +143,8 @@ TEST_CASE("denoise passes: pack_surface matches the CPU reference; bad depths an
       RenderGraph g;
       const auto d = harness.input(g, "depth", depth, F::RG32F);
       const auto n = harness.input(g, "normal", normal, F::RGBA32F);
-      const auto out = g.add_image("depth_normal", static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h), F::RGBA32F);
+      const auto out =
+          g.add_image("depth_normal", static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h), F::RGBA32F);
       passes::add_pack_surface(g, pipelines, {d, n, out}, given);
       ImageD got;
       harness.readback(g, out, &got);
@@ -154,7 +156,8 @@ TEST_CASE("denoise passes: pack_surface matches the CPU reference; bad depths an
       int background = 0;
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-          const bool got_bg = got.at(x, y, 0) == 0 && got.at(x, y, 1) == 0 && got.at(x, y, 2) == 0 && got.at(x, y, 3) == 0;
+          const bool got_bg =
+              got.at(x, y, 0) == 0 && got.at(x, y, 1) == 0 && got.at(x, y, 2) == 0 && got.at(x, y, 3) == 0;
           CHECK_MESSAGE(got_bg == (want.at(x, y, 0) == 0), "background at " << x << "," << y);
           background += got_bg;
         }
@@ -190,7 +193,8 @@ TEST_CASE("denoise passes: gradient pass matches the CPU reference") {
     RenderGraph g;
     const auto in = harness.input(g, "illumination", illumination, F::RGBA32F);
     const auto gp = harness.input(g, "gradient_prev", prev, F::RG32F);
-    const auto out = g.add_image("gradient", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh), F::RGBA16F);
+    const auto out =
+        g.add_image("gradient", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh), F::RGBA16F);
     passes::add_gradient(g, pipelines, {in, gp, out});
     ImageD got;
     harness.readback(g, out, &got);
@@ -205,7 +209,7 @@ TEST_CASE("denoise passes: gradient pass matches the CPU reference") {
 TEST_CASE("denoise passes: gradient_atrous pass matches the CPU reference at steps 1, 2 and 4") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
-  passes::DenoiseSettings settings;
+  asvgf::DenoiseSettings settings;
   for (const auto& size : kSizes) {
     const int w = size[0], h = size[1], gw = (w + 2) / 3, gh = (h + 2) / 3;
     Random r(23u + static_cast<std::uint32_t>(w));
@@ -221,8 +225,8 @@ TEST_CASE("denoise passes: gradient_atrous pass matches the CPU reference at ste
       RenderGraph g;
       const auto gin = harness.input(g, "gradient_in", grad, F::RGBA16F);
       const auto dni = harness.input(g, "depth_normal", dn, F::RGBA32F);
-      const auto out = g.add_image("gradient_out", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh),
-                                   F::RGBA16F);
+      const auto out =
+          g.add_image("gradient_out", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh), F::RGBA16F);
       passes::add_gradient_atrous(g, pipelines, {gin, dni, out}, iteration, settings);
       ImageD got;
       harness.readback(g, out, &got);
@@ -276,7 +280,9 @@ TemporalCase random_temporal_case(std::uint32_t seed, int w, int h) {
 
 }  // namespace
 
-TEST_CASE("denoise passes: gradient_reprojected matches the CPU reference (luminance sums per stratum, history and NaN handled)") {
+TEST_CASE(
+    "denoise passes: gradient_reprojected matches the CPU reference (luminance sums per stratum, history and NaN "
+    "handled)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   for (const auto& size : kSizes) {
@@ -300,8 +306,8 @@ TEST_CASE("denoise passes: gradient_reprojected matches the CPU reference (lumin
         harness.fill(g, dn, c.dn);
         const auto illumination = harness.input(g, "illumination", c.illumination, F::RGBA32F);
         const auto motion = harness.input(g, "motion", c.motion, F::RG32F);
-        const auto out = g.add_image("gradient", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh),
-                                     F::RGBA16F);
+        const auto out =
+            g.add_image("gradient", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh), F::RGBA16F);
         passes::add_gradient_reprojected(g, pipelines, {illumination, motion, dn, lum, out});
         harness.readback(g, out, &gradient);
         harness.readback(g, lum, &luminance);
@@ -323,7 +329,8 @@ TEST_CASE("denoise passes: gradient_reprojected matches the CPU reference (lumin
   }
 }
 
-TEST_CASE("denoise passes: temporal pass matches the CPU reference (constant and adaptive alpha, dropped samples counted)") {
+TEST_CASE(
+    "denoise passes: temporal pass matches the CPU reference (constant and adaptive alpha, dropped samples counted)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   for (const bool adaptive : {false, true}) {
@@ -333,8 +340,7 @@ TEST_CASE("denoise passes: temporal pass matches the CPU reference (constant and
       CAPTURE(w);
       const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
       const TemporalCase c = random_temporal_case(37u + static_cast<std::uint32_t>(w), w, h);
-      passes::DenoiseSettings settings;
-      settings.adaptive = adaptive;
+      asvgf::DenoiseSettings settings;
       passes::SanitizeCounters counters(*device);
       GraphHarness harness(*device);
       ImageD integrated, moments;
@@ -369,8 +375,8 @@ TEST_CASE("denoise passes: temporal pass matches the CPU reference (constant and
       const ImageD dn = quantize(c.dn, F::RGBA32F), prev_dn = quantize(c.prev_dn, F::RGBA32F);
       const ImageD prev_color = quantize(c.prev_color, F::RGBA16F), prev_moments = quantize(c.prev_moments, F::RGBA32F);
       const ImageD gradient = quantize(c.gradient, F::RGBA16F);
-      ref::TemporalInputs in{&illumination, &motion, &dn, &prev_dn, &prev_color, &prev_moments,
-                             adaptive ? &gradient : nullptr};
+      ref::TemporalInputs in{
+          &illumination, &motion, &dn, &prev_dn, &prev_color, &prev_moments, adaptive ? &gradient : nullptr};
       const auto want = ref::temporal(in, {settings.alpha, settings.moments_alpha, settings.history_cap, true});
       DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 3, fp16_tolerance(4)), "temporal colour");
       DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 4, fp16_tolerance(20)), "temporal variance");
@@ -392,7 +398,7 @@ TEST_CASE("denoise passes: temporal pass matches the CPU reference (constant and
 TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and spatial estimates)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
-  passes::DenoiseSettings settings;
+  asvgf::DenoiseSettings settings;
   for (const auto& size : kSizes) {
     const int w = size[0], h = size[1];
     CAPTURE(w);
@@ -412,15 +418,17 @@ TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and
     RenderGraph g;
     const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
     const auto out = g.add_image("color_variance", uw, uh, F::RGBA16F);
-    passes::add_variance(g, pipelines, {harness.input(g, "integrated", integrated, F::RGBA16F), harness.input(g, "moments", moments, F::RGBA32F),
-                 harness.input(g, "depth_normal", dn, F::RGBA32F), out},
-             settings);
+    passes::add_variance(
+        g, pipelines,
+        {harness.input(g, "integrated", integrated, F::RGBA16F), harness.input(g, "moments", moments, F::RGBA32F),
+         harness.input(g, "depth_normal", dn, F::RGBA32F), out},
+        settings);
     ImageD got;
     harness.readback(g, out, &got);
     harness.run(g);
-    const ImageD want = ref::variance(quantize(integrated, F::RGBA16F), quantize(moments, F::RGBA32F),
-                                      quantize(dn, F::RGBA32F),
-                                      {settings.sigma_z, settings.sigma_n, settings.sigma_l, settings.min_history});
+    const ImageD want =
+        ref::variance(quantize(integrated, F::RGBA16F), quantize(moments, F::RGBA32F), quantize(dn, F::RGBA32F),
+                      {settings.sigma_z, settings.sigma_n, settings.sigma_l, settings.min_history});
     DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(80)), "variance");
   }
 }
@@ -428,8 +436,8 @@ TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and
 TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and box, steps 1, 2, 4, history tap)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
-  for (const auto kernel : {passes::AtrousKernel::B3Spline, passes::AtrousKernel::Box}) {
-    passes::DenoiseSettings settings;
+  for (const auto kernel : {asvgf::AtrousKernel::B3Spline, asvgf::AtrousKernel::Box}) {
+    asvgf::DenoiseSettings settings;
     settings.kernel = kernel;
     for (const auto& size : kSizes) {
       const int w = size[0], h = size[1];
@@ -445,7 +453,7 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
         RenderGraph g;
         const auto out = g.add_image("atrous_out", uw, uh, F::RGBA16F);
         passes::AtrousResources res{harness.input(g, "color_in", color, F::RGBA16F),
-                                          harness.input(g, "depth_normal", dn, F::RGBA32F), out, std::nullopt};
+                                    harness.input(g, "depth_normal", dn, F::RGBA32F), out, std::nullopt};
         const bool tap = iteration == 1;
         if (tap) res.color_history = g.add_image("color_history", uw, uh, F::RGBA16F, Lifetime::Persistent);
         passes::add_atrous(g, pipelines, res, iteration, settings);
@@ -453,9 +461,9 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
         harness.readback(g, out, &got);
         if (tap) harness.readback(g, *res.color_history, &history);
         harness.run(g);
-        const ImageD want = ref::atrous(quantize(color, F::RGBA16F), quantize(dn, F::RGBA32F),
-                                        {1 << iteration, static_cast<int>(kernel), settings.sigma_z, settings.sigma_n,
-                                         settings.sigma_l});
+        const ImageD want = ref::atrous(
+            quantize(color, F::RGBA16F), quantize(dn, F::RGBA32F),
+            {1 << iteration, static_cast<int>(kernel), settings.sigma_z, settings.sigma_n, settings.sigma_l});
         DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(4)), "atrous");
         if (tap) CHECK(history.data == got.data);
       }
@@ -473,7 +481,7 @@ TEST_CASE(
     "and normal") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
-  passes::DenoiseSettings settings;
+  asvgf::DenoiseSettings settings;
   for (const auto& size : kSizes) {
     const int w = size[0], h = size[1];
     CAPTURE(w);
@@ -566,11 +574,13 @@ TEST_CASE(
   CHECK_NOTHROW(passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("fits", 8 * 8 * 16)}, 0, settings));
 }
 
-TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and ACES tone curves), zeroes and counts non-finite radiance") {
+TEST_CASE(
+    "denoise passes: composite pass matches the CPU reference (clamp and ACES tone curves), zeroes and counts "
+    "non-finite radiance") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   passes::SanitizeCounters counters(*device);
-  for (const auto tonemap : {passes::Tonemap::Clamp, passes::Tonemap::Aces}) {
+  for (const auto tonemap : {asvgf::Tonemap::Clamp, asvgf::Tonemap::Aces}) {
     const int w = 17, h = 13;
     Random r(91);
     ImageD illumination = random_color(r, w, h, 0, 3, 0);
@@ -578,22 +588,23 @@ TEST_CASE("denoise passes: composite pass matches the CPU reference (clamp and A
     albedo.at(3, 3, 0) = 0;  // the demodulation guard
     illumination.at(4, 4, 1) = std::numeric_limits<double>::quiet_NaN();
     illumination.at(5, 2, 0) = std::numeric_limits<double>::infinity();
-    passes::DenoiseSettings settings;
+    asvgf::DenoiseSettings settings;
     settings.tonemap = tonemap;
     settings.exposure = 1.5f;
     GraphHarness harness(*device);
     RenderGraph g;
     const auto hdr = g.add_image("hdr", w, h, F::RGBA32F);
     const auto display = g.add_image("display", w, h, F::RGBA8Unorm);
-    passes::add_composite(g, pipelines, {harness.input(g, "illumination", illumination, F::RGBA32F), harness.input(g, "albedo", albedo, F::RGBA16F),
-                 hdr, display, counters.import(g)},
-             settings);
+    passes::add_composite(g, pipelines,
+                          {harness.input(g, "illumination", illumination, F::RGBA32F),
+                           harness.input(g, "albedo", albedo, F::RGBA16F), hdr, display, counters.import(g)},
+                          settings);
     ImageD got_hdr, got_display;
     harness.readback(g, hdr, &got_hdr);
     harness.readback(g, display, &got_display);
     harness.run(g);
-    const auto want = ref::composite(quantize(illumination, F::RGBA32F), quantize(albedo, F::RGBA16F), settings.exposure,
-                                     static_cast<int>(tonemap));
+    const auto want = ref::composite(quantize(illumination, F::RGBA32F), quantize(albedo, F::RGBA16F),
+                                     settings.exposure, static_cast<int>(tonemap));
     DENOISE_CHECK_CLOSE(compare(got_hdr, want.hdr, 4, fp32_tolerance(3)), "composite hdr");
     DENOISE_CHECK_CLOSE(compare(got_display, want.display, 4, [](double) { return 1.0 / 255.0; }), "composite display");
     CHECK(got_hdr.at(4, 4, 1) == 0.0);

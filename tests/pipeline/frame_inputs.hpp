@@ -5,16 +5,16 @@
 #include <cstring>
 #include <vector>
 
-#include "denoiser/graph/graph_runtime.hpp"
+#include "asvgf/graph_runtime.hpp"
 #include "renderer/render_passes.hpp"
-#include "renderer/scene_gpu.hpp"
 #include "renderer/scene/scene.hpp"
+#include "renderer/scene_gpu.hpp"
 
 struct FrameInputs {
   std::uint32_t width = 0, height = 0;
-  std::vector<std::uint32_t> visibility;  // 4 per pixel
+  std::vector<std::uint32_t> visibility;                  // 4 per pixel
   std::vector<float> depth_normal, motion, illumination;  // 4 per pixel
-  std::vector<std::uint16_t> albedo;                     // 4 fp16 per pixel
+  std::vector<std::uint16_t> albedo;                      // 4 fp16 per pixel
   // With `split`: pathtrace's second signal and its albedo; `illumination` and `albedo` are then
   // the diffuse ones.
   std::vector<float> specular, specular_motion;  // specular.a: the first specular ray's length
@@ -42,7 +42,8 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
                       {"illumination", hal::Format::RGBA32F, {}},    {"specular", hal::Format::RGBA32F, {}},
                       {"specular_albedo", hal::Format::RGBA16F, {}}, {"specular_motion", hal::Format::RGBA32F, {}}};
   for (auto& t : targets) t.image = device.create_image({t.name, width, height, t.format, usage});
-  const auto ray_counter = device.create_buffer({"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst});
+  const auto ray_counter =
+      device.create_buffer({"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst});
   const std::uint32_t zeros[4] = {};
   device.upload_buffer(ray_counter, 0, std::as_bytes(std::span(zeros)));
   auto commands = device.create_command_list("frame inputs");

@@ -9,9 +9,9 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "report/metrics.hpp"
 #include "renderer/renderer.hpp"
 #include "renderer/scene/builtin.hpp"
+#include "report/metrics.hpp"
 #include "vulkan/validated_device.hpp"
 
 using namespace asvgf;
@@ -74,8 +74,8 @@ TEST_CASE("quality on orbit after 16 frames: svgf and asvgf have at most 1/25 of
 // black image, which any sample count gives exactly; the test checks that it does rather than
 // tracing thousands of samples of black. Lags measured on lavapipe, identical at 128x128 and 64x64:
 // asvgf 0, svgf 25, ema 0.2 27, ema 0.05 61 frames. Mutant: A-SVGF's gradient off
-// (`denoise.adaptive = false` in the frame graph) gives asvgf svgf's 25 frames and fails the first
-// check.
+// (`method == DenoiseMethod::Asvgf` false in add_denoiser's `adaptive`) gives asvgf svgf's 25 frames and fails the
+// first check.
 TEST_CASE("quality on light-exit: asvgf recovers in a third of svgf's frames, ema 0.05 lags more than 0.2") {
   // A method's steady error: the mean relMSE of frames 35..39 of a fresh run that starts at frame 9
   // (the final, static scene, no stale light in any history). Its lag: frames after 9 until the

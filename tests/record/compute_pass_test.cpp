@@ -1,12 +1,13 @@
 // add_compute_pass: the shader's reflection decides read/write, and every name is checked against
-// the shader when the pass is declared; PipelineCache checks the generated uniform struct. Runs without a GPU (nothing is recorded).
+// the shader when the pass is declared; PipelineCache checks the generated uniform struct. Runs without a GPU (nothing
+// is recorded).
 #include <doctest/doctest.h>
 
 #include <string>
 
+#include "asvgf/compute_pass.hpp"
 #include "checked_record.hpp"
 #include "hal/error.hpp"
-#include "denoiser/passes/compute_pass.hpp"
 #include "shaders/accumulate.hpp"
 #include "shaders/atrous.history.hpp"
 #include "shaders/atrous.plain.hpp"
@@ -67,7 +68,8 @@ TEST_CASE("add_compute_pass rejects bindings that do not match the shader, namin
     CHECK(declare({{"src_image"}, {"dst_image"}, {"params"}}).find("no binding 'params'") != std::string::npos);
   }
   SUBCASE("a binding given twice") {
-    CHECK(declare({{"src_image"}, {"dst_image"}, {"src_image"}}).find("'src_image' is given twice") != std::string::npos);
+    CHECK(declare({{"src_image"}, {"dst_image"}, {"src_image"}}).find("'src_image' is given twice") !=
+          std::string::npos);
   }
   SUBCASE("a history binding the shader writes") {
     CHECK(declare({{"src_image"}, {"dst_image", 0, true}}).find("history binding 'dst_image' is written") !=

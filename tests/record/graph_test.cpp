@@ -5,13 +5,13 @@
 #include <algorithm>
 #include <random>
 
-#include "renderer/frame_graph.hpp"
-#include "renderer/scene/builtin.hpp"
-#include "denoiser/graph/graph_runtime.hpp"
-#include "denoiser/graph/pass_traffic.hpp"
+#include "asvgf/graph_runtime.hpp"
+#include "asvgf/pass_traffic.hpp"
 #include "checked_record.hpp"
 #include "hal/error.hpp"
 #include "hal_record/record_device.hpp"
+#include "renderer/frame_graph.hpp"
+#include "renderer/scene/builtin.hpp"
 
 using namespace asvgf;
 using graph::GraphBarrier;
@@ -56,8 +56,8 @@ struct Scene : CheckedRecord {
 // Runs `frames` frames of a method; `mutate` may edit each frame's graph before compiling.
 // Starts at `first` (light-exit moves from frame 4 on).
 void run_frames(Scene& scene, frame::FrameSettings settings, int frames,
-                const std::function<void(graph::RenderGraph&)>& mutate = {}, int first = 0,
-                bool binding_checks = true, std::vector<std::string>* culled = nullptr) {
+                const std::function<void(graph::RenderGraph&)>& mutate = {}, int first = 0, bool binding_checks = true,
+                std::vector<std::string>* culled = nullptr) {
   graph::GraphRuntime runtime(scene.device);
   runtime.set_binding_checks(binding_checks);
   frame::FrameGraphBuilder builder(scene.device);
@@ -211,7 +211,7 @@ TEST_CASE(
     "the a-trous chain passes packed filter texels in storage buffers where the device's storage binding holds them, "
     "RGBA16F images otherwise and for the box kernel") {
   // "name:buffer" / "name:image" for each a-trous resource of one frame, which must also run clean.
-  const auto kinds = [](std::uint64_t max_storage_buffer_range, passes::AtrousKernel kernel) {
+  const auto kinds = [](std::uint64_t max_storage_buffer_range, asvgf::AtrousKernel kernel) {
     hal::record::RecordOptions options;
     options.capabilities.max_storage_buffer_range = max_storage_buffer_range;
     Scene scene(options);
@@ -235,11 +235,11 @@ TEST_CASE(
     return out;
   };
   const std::uint64_t packed_bytes = 32 * 16 * 16;
-  CHECK(kinds(packed_bytes, passes::AtrousKernel::B3Spline) ==
+  CHECK(kinds(packed_bytes, asvgf::AtrousKernel::B3Spline) ==
         "atrous.1:buffer atrous.2:buffer atrous.3:buffer atrous.4:buffer atrous.5:image ");
-  CHECK(kinds(packed_bytes - 1, passes::AtrousKernel::B3Spline) ==
+  CHECK(kinds(packed_bytes - 1, asvgf::AtrousKernel::B3Spline) ==
         "atrous.1:image atrous.2:image atrous.3:image atrous.4:image atrous.5:image ");
-  CHECK(kinds(packed_bytes, passes::AtrousKernel::Box) ==
+  CHECK(kinds(packed_bytes, asvgf::AtrousKernel::Box) ==
         "atrous.1:image atrous.2:image atrous.3:image atrous.4:image atrous.5:image ");
 }
 
@@ -258,8 +258,8 @@ TEST_CASE("culling: an output nobody reads culls its pass, a still frame culls t
   for (const auto& c : compiled.culled) culled[c.name] = c.reason;
   CHECK(culled.count("debug_view") == 1);
   CHECK(culled["debug_view"].find("nothing that contributes") != std::string::npos);
-  for (const char* name :
-       {"gradient_clear", "gradient_select", "gradient_resolve", "gradient", "gradient_atrous.1", "gradient_atrous.3"}) {
+  for (const char* name : {"gradient_clear", "gradient_select", "gradient_resolve", "gradient", "gradient_atrous.1",
+                           "gradient_atrous.3"}) {
     CAPTURE(name);
     REQUIRE(culled.count(name) == 1);
     CHECK(culled[name].find("nothing in the scene, camera or lights moved") != std::string::npos);
@@ -327,11 +327,11 @@ TEST_CASE("pass traffic: each declared image and sized buffer counts once per pa
   graph::RenderGraph g;
   const auto scene = checked.device.create_buffer({"scene", 1000, hal::BufferUsage::Storage});
   const auto counter = checked.device.create_buffer({"counter", 16, hal::BufferUsage::Storage});
-  const auto in = g.import("scene", scene, State::ShaderRead);                  // size unknown: uncounted
-  const auto count = g.import_buffer("counter", counter, State::ShaderWrite, 16);  // 16 bytes
-  const auto a = g.add_image("a", 10, 6, hal::Format::RGBA16F);                  // 480 bytes
+  const auto in = g.import("scene", scene, State::ShaderRead);                      // size unknown: uncounted
+  const auto count = g.import_buffer("counter", counter, State::ShaderWrite, 16);   // 16 bytes
+  const auto a = g.add_image("a", 10, 6, hal::Format::RGBA16F);                     // 480 bytes
   const auto h = g.add_image("h", 10, 6, hal::Format::R32F, Lifetime::Persistent);  // 240 bytes
-  const auto out = g.add_image("out", 10, 6, hal::Format::RGBA32F);               // 960 bytes
+  const auto out = g.add_image("out", 10, 6, hal::Format::RGBA32F);                 // 960 bytes
   g.add_pass("trace").read(in).write(a).read_write(count);
   g.add_pass("filter").read(a).read_history(h).write(h).write(out);
   g.output(out);
@@ -424,7 +424,7 @@ TEST_CASE("aliasing: seeded random graphs never alias two transients whose lifet
     CAPTURE(seed);
     std::mt19937 rng(seed);
     CheckedRecord checked;
-  hal::Device& device = checked.device;
+    hal::Device& device = checked.device;
     graph::GraphRuntime runtime(device);
     graph::RenderGraph g;
     std::vector<graph::ResourceId> made;

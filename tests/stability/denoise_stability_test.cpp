@@ -62,7 +62,7 @@ void check_finite(const FrameOutput& out) {
 struct Runner {
   DenoiserChain chain;
   double max_input_mean = 0;
-  Runner(hal::Device& device, passes::DenoiseSettings s) : chain(device, s) {}
+  Runner(hal::Device& device, asvgf::DenoiseSettings s) : chain(device, s) {}
   FrameOutput frame(const FrameInput& in) {
     max_input_mean = std::max(max_input_mean, sanitised_mean(in.illumination));
     FrameOutput out = chain.run(in);
@@ -135,9 +135,12 @@ TEST_CASE("denoise stability: NaN and +-Inf samples are dropped and counted, nev
       for (int x = 0; x < w; ++x) {
         const double u = r.uniform(0, 1);
         const int c = static_cast<int>(r.uniform(0, 3));
-        if (u < 0.1) f.illumination.at(x, y, c) = kNaN, ++nan;
-        else if (u < 0.15) f.illumination.at(x, y, c) = kInf, ++inf;
-        else if (u < 0.2) f.illumination.at(x, y, c) = -kInf, ++inf;
+        if (u < 0.1)
+          f.illumination.at(x, y, c) = kNaN, ++nan;
+        else if (u < 0.15)
+          f.illumination.at(x, y, c) = kInf, ++inf;
+        else if (u < 0.2)
+          f.illumination.at(x, y, c) = -kInf, ++inf;
       }
     run.frame(f);
   }
@@ -150,14 +153,15 @@ TEST_CASE("denoise stability: NaN and +-Inf samples are dropped and counted, nev
 
 TEST_CASE("denoise stability: a constant image has zero variance and comes out unchanged") {
   ValidatedDevice device;
-  for (const auto kernel : {passes::AtrousKernel::B3Spline, passes::AtrousKernel::Box}) {
-    passes::DenoiseSettings s;
+  for (const auto kernel : {asvgf::AtrousKernel::B3Spline, asvgf::AtrousKernel::Box}) {
+    asvgf::DenoiseSettings s;
     s.kernel = kernel;
     Runner run(*device, s);
     FrameInput f = flat_frame(19, 11, 0.0);
     for (int y = 0; y < 11; ++y)
-      for (int x = 0; x < 19; ++x) f.illumination.at(x, y, 0) = 0.25, f.illumination.at(x, y, 1) = 0.5,
-                                   f.illumination.at(x, y, 2) = 0.75;  // exact in fp16
+      for (int x = 0; x < 19; ++x)
+        f.illumination.at(x, y, 0) = 0.25, f.illumination.at(x, y, 1) = 0.5,
+                                f.illumination.at(x, y, 2) = 0.75;  // exact in fp16
     for (int frame = 0; frame < 3; ++frame) {
       const FrameOutput out = run.frame(f);
       // One fp16 ulp per store on the way (temporal, variance, 5 a-trous), at most.
@@ -165,7 +169,8 @@ TEST_CASE("denoise stability: a constant image has zero variance and comes out u
       for (int y = 0; y < 11; ++y)
         for (int x = 0; x < 19; ++x) {
           for (int c = 0; c < 3; ++c)
-            CHECK(std::abs(out.hdr.at(x, y, c) - f.illumination.at(x, y, c)) <= stores * fp16_ulp(f.illumination.at(x, y, c)));
+            CHECK(std::abs(out.hdr.at(x, y, c) - f.illumination.at(x, y, c)) <=
+                  stores * fp16_ulp(f.illumination.at(x, y, c)));
           CHECK(out.filtered.at(x, y, 3) == 0.0);  // variance
         }
     }
@@ -192,8 +197,10 @@ TEST_CASE("denoise stability: a flat wall facing the camera with pixels that hit
       for (int x = 0; x < w; ++x) {
         const bool miss = f.depth_normal.at(x, y, 0) == 0;
         for (int c = 0; c < 3; ++c) {
-          if (miss) CHECK(std::abs(o.hdr.at(x, y, c) - 1.0) <= 2e-3);  // passed through, not filtered
-          else CHECK(o.filtered.at(x, y, c) <= 2.0);  // no leak from the 1000-valued misses
+          if (miss)
+            CHECK(std::abs(o.hdr.at(x, y, c) - 1.0) <= 2e-3);  // passed through, not filtered
+          else
+            CHECK(o.filtered.at(x, y, c) <= 2.0);  // no leak from the 1000-valued misses
         }
       }
   }
@@ -222,7 +229,7 @@ TEST_CASE("denoise stability: alpha = 1 and alpha = 0.01 with the history cap re
   ValidatedDevice device;
   for (const float alpha : {1.0f, 0.01f}) {
     CAPTURE(alpha);
-    passes::DenoiseSettings s;
+    asvgf::DenoiseSettings s;
     s.alpha = s.moments_alpha = alpha;
     s.history_cap = 8;
     Runner run(*device, s);
@@ -246,8 +253,10 @@ TEST_CASE("denoise stability: values near the fp16 maximum and fp16 denormals") 
     FrameInput f = flat_frame(w, h, 60000.0);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
-        if (x % 4 == 1) for (int c = 0; c < 3; ++c) f.illumination.at(x, y, c) = 1e5;  // above fp16 max
-        if (x % 4 == 2) for (int c = 0; c < 3; ++c) f.illumination.at(x, y, c) = 3e-8;  // fp16 denormal
+        if (x % 4 == 1)
+          for (int c = 0; c < 3; ++c) f.illumination.at(x, y, c) = 1e5;  // above fp16 max
+        if (x % 4 == 2)
+          for (int c = 0; c < 3; ++c) f.illumination.at(x, y, c) = 3e-8;  // fp16 denormal
       }
     const FrameOutput out = run.frame(f);
     for (double v : out.color_history.data) CHECK(std::abs(v) <= 65504.0);

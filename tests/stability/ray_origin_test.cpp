@@ -1,4 +1,4 @@
-// Where secondary rays start (shaders/frame/pathtrace.comp, spawn_origin): the picture must not
+// Where secondary rays start (shaders/renderer/pathtrace.comp, spawn_origin): the picture must not
 // depend on the scene's scale, no light may pass through closed geometry at its edges and corners,
 // and the offsets must not cut a light off from the walls of the box that holds it. Both tracing
 // variants (ray queries and the software BVH) are checked.

@@ -107,7 +107,7 @@ TEST_CASE("denoiser settings: every checked setting has a range, and every range
     CHECK(names.insert(r.setting).second);
     CHECK(std::string(r.range).size() > 0);
   }
-  // The members of DenoiseSettings but `adaptive` (set from the method, not by the user).
+  // Every member of DenoiseSettings.
   for (const char* member : {"alpha", "moments_alpha", "atrous_iterations", "sigma_z", "sigma_n", "sigma_l", "kernel",
                              "gradient_iterations", "history_cap", "history_tap", "gradient_source", "min_history",
                              "exposure", "tonemap", "specular_atrous_iterations"})

@@ -8,14 +8,13 @@
 #include <span>
 #include <string>
 
+#include "asvgf/denoiser_graph.hpp"
+#include "asvgf/graph_runtime.hpp"
 #include "denoiser/api/input_report.hpp"
-#include "denoiser/graph/graph_runtime.hpp"
-#include "hal/error.hpp"
 #include "denoiser/passes/convert_inputs.hpp"
-#include "denoiser/passes/denoise_passes.hpp"
 #include "denoiser/passes/pack_surface.hpp"
-#include "denoiser/passes/temporal.hpp"
 #include "denoiser/passes/validate_inputs.hpp"
+#include "hal/error.hpp"
 
 namespace asvgf {
 namespace {
@@ -89,7 +88,6 @@ struct Denoiser::Impl {
 Denoiser::Denoiser(hal::Device& device, const DenoiserConfig& config) {
   check_config(device, config);
   impl_ = std::make_unique<Impl>(device, config);
-  impl_->config.settings.adaptive = config.method == DenoiseMethod::Asvgf;
 }
 
 Denoiser::~Denoiser() {
@@ -182,16 +180,13 @@ void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, cons
     impl_->input_counts_state = hal::State::CopySrc;
   }
 
-  const bool adaptive = impl_->config.method == DenoiseMethod::Asvgf;
   std::optional<ResourceId> gradient_samples;
-  if (adaptive && impl_->config.settings.gradient_source == GradientSource::Reshaded && in.gradient_samples)
+  if (reshades_gradients(impl_->config.method, impl_->config.settings) && in.gradient_samples)
     gradient_samples = import("gradient_samples", *in.gradient_samples, gw, gh);
-  const passes::Filter filter =
-      impl_->config.method == DenoiseMethod::Ema ? passes::Filter::Temporal : passes::Filter::Spatiotemporal;
   passes::add_denoiser(g, impl_->pipelines,
                        {illumination, motion, depth_normal, albedo, counters, radiance, display, gradient_samples,
                         gradient_samples ? "" : "no gradient samples given this frame (nothing moved)"},
-                       impl_->config.settings, filter);
+                       impl_->config.settings, impl_->config.method);
   g.output(radiance, out.final_state);
   if (out.display) g.output(display, out.final_state);
 
@@ -207,8 +202,12 @@ void Denoiser::denoise(const DenoiserInputs& inputs, const DenoiserOutputs& outp
   impl_->device.wait();
 }
 
-std::vector<PassTime> Denoiser::timings() { return impl_->runtime.timings(); }
+std::vector<PassTime> Denoiser::timings() {
+  return impl_->runtime.timings();
+}
 
-SanitisedCounts Denoiser::sanitised() { return impl_->counters.read(); }
+SanitisedCounts Denoiser::sanitised() {
+  return impl_->counters.read();
+}
 
 }  // namespace asvgf

@@ -4,7 +4,7 @@
 #include <map>
 #include <set>
 
-#include "denoiser/graph/graph_runtime.hpp"
+#include "asvgf/graph_runtime.hpp"
 
 namespace asvgf::graph {
 namespace {

@@ -1,7 +1,7 @@
 // Printing a compiled frame: text for people, Graphviz for pictures.
 #include <sstream>
 
-#include "denoiser/graph/compiled_frame.hpp"
+#include "asvgf/compiled_frame.hpp"
 
 namespace asvgf::graph {
 namespace {
@@ -9,12 +9,18 @@ namespace {
 std::string use_name(const PassAccess& a) {
   if (a.history) return "history";
   switch (a.use) {
-    case Use::ShaderRead: return "read";
-    case Use::ShaderWrite: return "write";
-    case Use::ShaderReadWrite: return "read-write";
-    case Use::CopySrc: return "copy-src";
-    case Use::CopyDst: return "copy-dst";
-    case Use::AccelRead: return "accel";
+    case Use::ShaderRead:
+      return "read";
+    case Use::ShaderWrite:
+      return "write";
+    case Use::ShaderReadWrite:
+      return "read-write";
+    case Use::CopySrc:
+      return "copy-src";
+    case Use::CopyDst:
+      return "copy-dst";
+    case Use::AccelRead:
+      return "accel";
   }
   return "?";
 }
@@ -29,10 +35,14 @@ std::string mib(std::uint64_t bytes) {
 std::string place(const CompiledFrame& f, ResourceId r) {
   const Placement& p = f.placement[r];
   switch (p.where) {
-    case Placement::Where::Transient: return "transient slot " + std::to_string(p.slot);
-    case Placement::Where::Persistent: return "persistent, writes version " + std::to_string(p.slot);
-    case Placement::Where::Imported: return "imported";
-    case Placement::Where::Unused: return "unused";
+    case Placement::Where::Transient:
+      return "transient slot " + std::to_string(p.slot);
+    case Placement::Where::Persistent:
+      return "persistent, writes version " + std::to_string(p.slot);
+    case Placement::Where::Imported:
+      return "imported";
+    case Placement::Where::Unused:
+      return "unused";
   }
   return "?";
 }
@@ -67,8 +77,7 @@ std::string CompiledFrame::text() const {
     s << "\n";
   }
   s << "memory: transient " << mib(memory.transient_with_aliasing) << " with aliasing, "
-    << mib(memory.transient_without_aliasing) << " without; persistent (2 versions) " << mib(memory.persistent)
-    << "\n";
+    << mib(memory.transient_without_aliasing) << " without; persistent (2 versions) " << mib(memory.persistent) << "\n";
   return s.str();
 }
 
@@ -96,8 +105,8 @@ std::string CompiledFrame::dot() const {
     }
   }
   for (const auto& c : culled)
-    s << "  \"" << c.name << "\" [shape=box, style=dashed, fontcolor=gray, label=\"" << c.name << "\\n(left out: "
-      << c.reason << ")\"];\n";
+    s << "  \"" << c.name << "\" [shape=box, style=dashed, fontcolor=gray, label=\"" << c.name
+      << "\\n(left out: " << c.reason << ")\"];\n";
   s << "}\n";
   return s.str();
 }

@@ -2,7 +2,7 @@
 // the ping-pong, and what a pass sees of it (PassContext).
 #include <algorithm>
 
-#include "denoiser/graph/graph_runtime.hpp"
+#include "asvgf/graph_runtime.hpp"
 
 namespace asvgf::graph {
 
@@ -29,8 +29,10 @@ void GraphRuntime::execute(const CompiledFrame& frame, hal::CommandList& command
     for (ResourceId r : cp.history_clears) {
       const hal::Resource h = physical(frame, r, true);
       commands.barrier({h, hal::State::Undefined, hal::State::CopyDst});
-      if (h.kind == hal::ResourceKind::Image) commands.clear_image(hal::ImageHandle{h.id}, {0, 0, 0, 0});
-      else commands.clear_buffer(hal::BufferHandle{h.id}, 0);
+      if (h.kind == hal::ResourceKind::Image)
+        commands.clear_image(hal::ImageHandle{h.id}, {0, 0, 0, 0});
+      else
+        commands.clear_buffer(hal::BufferHandle{h.id}, 0);
     }
     std::vector<hal::Barrier> barriers;
     for (const GraphBarrier& b : cp.barriers)

@@ -2,7 +2,7 @@
 // (created when a compiled frame first needs them), the binding-set cache, the timers.
 #include <algorithm>
 
-#include "denoiser/graph/graph_runtime.hpp"
+#include "asvgf/graph_runtime.hpp"
 
 namespace asvgf::graph {
 namespace {
@@ -82,14 +82,19 @@ void GraphRuntime::ensure_resources(const CompiledFrame& frame) {
   for (ResourceId r = 0; r < res.size(); ++r) {
     const Placement& p = frame.placement[r];
     switch (p.where) {
-      case Placement::Where::Transient: resolved_[r][0] = slots_.at(p.slot).handle; break;
+      case Placement::Where::Transient:
+        resolved_[r][0] = slots_.at(p.slot).handle;
+        break;
       case Placement::Where::Persistent: {
         const Persistent& versions = persistent_.at(res[r].name);
         resolved_[r] = {versions.versions[p.slot], versions.versions[1 - p.slot]};
         break;
       }
-      case Placement::Where::Imported: resolved_[r][0] = res[r].imported; break;
-      case Placement::Where::Unused: break;
+      case Placement::Where::Imported:
+        resolved_[r][0] = res[r].imported;
+        break;
+      case Placement::Where::Unused:
+        break;
     }
   }
 }

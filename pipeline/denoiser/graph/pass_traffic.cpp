@@ -1,4 +1,4 @@
-#include "denoiser/graph/pass_traffic.hpp"
+#include "asvgf/pass_traffic.hpp"
 
 namespace asvgf::graph {
 namespace {

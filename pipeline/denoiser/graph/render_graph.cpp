@@ -1,23 +1,34 @@
 // Declaring resources and passes.
-#include "denoiser/graph/render_graph.hpp"
+#include "asvgf/render_graph.hpp"
 
 namespace asvgf::graph {
 
 hal::State required_state(Use use) {
   switch (use) {
-    case Use::ShaderRead: return hal::State::ShaderRead;
+    case Use::ShaderRead:
+      return hal::State::ShaderRead;
     case Use::ShaderWrite:
-    case Use::ShaderReadWrite: return hal::State::ShaderWrite;
-    case Use::CopySrc: return hal::State::CopySrc;
-    case Use::CopyDst: return hal::State::CopyDst;
-    case Use::AccelRead: return hal::State::AccelRead;
+    case Use::ShaderReadWrite:
+      return hal::State::ShaderWrite;
+    case Use::CopySrc:
+      return hal::State::CopySrc;
+    case Use::CopyDst:
+      return hal::State::CopyDst;
+    case Use::AccelRead:
+      return hal::State::AccelRead;
   }
   return hal::State::Undefined;
 }
-bool reads(Use use) { return use != Use::ShaderWrite && use != Use::CopyDst; }
-bool writes(Use use) { return use == Use::ShaderWrite || use == Use::ShaderReadWrite || use == Use::CopyDst; }
+bool reads(Use use) {
+  return use != Use::ShaderWrite && use != Use::CopyDst;
+}
+bool writes(Use use) {
+  return use == Use::ShaderWrite || use == Use::ShaderReadWrite || use == Use::CopyDst;
+}
 
-PassDecl& PassBuilder::pass() { return graph_.passes()[index_]; }
+PassDecl& PassBuilder::pass() {
+  return graph_.passes()[index_];
+}
 PassBuilder& PassBuilder::read(ResourceId r, Use use) {
   pass().accesses.push_back({r, use});
   return *this;
@@ -33,7 +44,9 @@ PassBuilder& PassBuilder::write(ResourceId r, Use use) {
   pass().accesses.push_back({r, use});
   return *this;
 }
-PassBuilder& PassBuilder::read_write(ResourceId r) { return write(r, Use::ShaderReadWrite); }
+PassBuilder& PassBuilder::read_write(ResourceId r) {
+  return write(r, Use::ShaderReadWrite);
+}
 PassBuilder& PassBuilder::skip_if(bool condition, std::string reason) {
   if (condition) pass().skip_reason = std::move(reason);
   return *this;
@@ -81,7 +94,8 @@ ResourceId RenderGraph::import(std::string name, hal::Resource resource, hal::St
   return static_cast<ResourceId>(resources_.size() - 1);
 }
 
-ResourceId RenderGraph::import_buffer(std::string name, hal::BufferHandle buffer, hal::State state, std::uint64_t size) {
+ResourceId RenderGraph::import_buffer(std::string name, hal::BufferHandle buffer, hal::State state,
+                                      std::uint64_t size) {
   const ResourceId id = import(std::move(name), buffer, state);
   resources_[id].size = size;
   return id;

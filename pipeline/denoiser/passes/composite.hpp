@@ -4,9 +4,9 @@
 
 #include <optional>
 
-#include "denoiser/graph/render_graph.hpp"
-#include "denoiser/passes/compute_pass.hpp"
-#include "denoiser/passes/denoise_settings.hpp"
+#include "asvgf/compute_pass.hpp"
+#include "asvgf/denoise_settings.hpp"
+#include "asvgf/render_graph.hpp"
 
 namespace asvgf::passes {
 

@@ -1,4 +1,4 @@
-#include "denoiser/passes/compute_pass.hpp"
+#include "asvgf/compute_pass.hpp"
 
 #include <algorithm>
 #include <string>

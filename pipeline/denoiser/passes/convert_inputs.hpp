@@ -3,8 +3,8 @@
 // illumination, re-modulation albedo and motion (previous minus current, pixels, y down).
 #pragma once
 
-#include "denoiser/graph/render_graph.hpp"
-#include "denoiser/passes/compute_pass.hpp"
+#include "asvgf/compute_pass.hpp"
+#include "asvgf/render_graph.hpp"
 
 namespace asvgf::passes {
 

@@ -3,8 +3,8 @@
 // `gradient_reprojected`, the same estimated from reprojected noisy luminance.
 #pragma once
 
-#include "denoiser/graph/render_graph.hpp"
-#include "denoiser/passes/compute_pass.hpp"
+#include "asvgf/compute_pass.hpp"
+#include "asvgf/render_graph.hpp"
 
 namespace asvgf::passes {
 

@@ -2,9 +2,9 @@
 // one edge-aware a-trous iteration over (delta, Delta) at 1/3 resolution, step 2^iteration.
 #pragma once
 
-#include "denoiser/graph/render_graph.hpp"
-#include "denoiser/passes/compute_pass.hpp"
-#include "denoiser/passes/denoise_settings.hpp"
+#include "asvgf/compute_pass.hpp"
+#include "asvgf/denoise_settings.hpp"
+#include "asvgf/render_graph.hpp"
 
 namespace asvgf::passes {
 

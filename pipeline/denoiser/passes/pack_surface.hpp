@@ -3,8 +3,8 @@
 // pass; the frame's own G-buffer writes depth_normal directly.
 #pragma once
 
-#include "denoiser/graph/render_graph.hpp"
-#include "denoiser/passes/compute_pass.hpp"
+#include "asvgf/compute_pass.hpp"
+#include "asvgf/render_graph.hpp"
 
 namespace asvgf::passes {
 

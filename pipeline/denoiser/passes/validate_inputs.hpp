@@ -5,8 +5,8 @@
 
 #include <cstdint>
 
-#include "denoiser/graph/render_graph.hpp"
-#include "denoiser/passes/compute_pass.hpp"
+#include "asvgf/compute_pass.hpp"
+#include "asvgf/render_graph.hpp"
 
 namespace asvgf::passes {
 

@@ -35,7 +35,7 @@ struct Texture {
 //   tracing in float32 multiplies up to four coordinate differences (|cross(e1, e2)|^2 when a
 //   sample is projected forward; the watertight test's depth is a product of three), and
 //   (2 * 2^30)^4 = 2^124 stays below float32's largest value 2^128. Scenes are scale-independent
-//   below it: the ray offsets are relative (shaders/frame/pathtrace.comp).
+//   below it: the ray offsets are relative (shaders/renderer/pathtrace.comp).
 constexpr float kMaxEmission = 65504.0f;
 constexpr float kMaxCoordinate = 1073741824.0f;  // 2^30
 

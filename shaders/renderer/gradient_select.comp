@@ -31,7 +31,7 @@ layout(set = 0, binding = 14, std430) buffer Claims { uint values[]; } claims;
 
 Camera cam;
 
-#include "frame/gradient_projection.glsl"
+#include "renderer/gradient_projection.glsl"
 
 void main() {
   ivec2 s = ivec2(gl_GlobalInvocationID.xy);

@@ -1,4 +1,4 @@
-// denoiser/graph/compiled_frame.hpp: what compiling one render graph gives: the passes in execution order
+// asvgf/compiled_frame.hpp: what compiling one render graph gives: the passes in execution order
 // with the barriers before each, the culled passes with reasons, where every resource lives, and
 // the states the frame leaves behind. GraphRuntime::compile makes it (compile.cpp); text() and dot()
 // print it (compiled_frame.cpp).
@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "denoiser/graph/render_graph.hpp"
+#include "asvgf/render_graph.hpp"
 
 namespace asvgf::graph {
 

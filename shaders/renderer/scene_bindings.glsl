@@ -1,4 +1,4 @@
-// frame/scene_bindings.glsl: the scene buffers every tracing pass binds (names are bindings).
+// renderer/scene_bindings.glsl: the scene buffers every tracing pass binds (names are bindings).
 // Binding numbers 0..9 are reserved for these; passes number their own from 10.
 #ifndef ASVGF_FRAME_SCENE_BINDINGS_GLSL
 #define ASVGF_FRAME_SCENE_BINDINGS_GLSL

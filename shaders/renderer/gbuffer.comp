@@ -20,7 +20,7 @@ layout(set = 0, binding = 0, std140) uniform Params {
                     // diffuse lobe's albedo (pathtrace's SPLIT_SPECULAR writes the GGX lobe's)
 } params;
 
-#include "frame/scene_bindings.glsl"
+#include "renderer/scene_bindings.glsl"
 
 Camera cam;
 Camera prev_cam;

@@ -36,7 +36,7 @@ layout(set = 0, binding = 0, std140) uniform Params {
   uint pad2;
 } params;
 
-#include "frame/scene_bindings.glsl"
+#include "renderer/scene_bindings.glsl"
 #include "common/random.glsl"
 #include "common/sampling.glsl"
 

@@ -33,7 +33,7 @@ layout(set = 0, binding = 16, rgba32f) writeonly uniform image2D gradient_prev; 
 
 Camera cam;
 
-#include "frame/gradient_projection.glsl"
+#include "renderer/gradient_projection.glsl"
 
 void main() {
   ivec2 sq = ivec2(gl_GlobalInvocationID.xy);

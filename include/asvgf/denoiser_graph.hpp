@@ -1,31 +1,35 @@
-// denoiser/passes/denoise_passes.hpp: the whole denoiser as one call, used by the frame (renderer/frame_graph.cpp),
-// the tests and, later, the public API: A-SVGF's gradient reconstruction (gradient, gradient_atrous
-// x settings.gradient_iterations), temporal accumulation, variance, the a-trous iterations and
-// composite, over images the caller declared in the graph.
+// asvgf/denoiser_graph.hpp: the denoiser recorded into your own render graph (asvgf/render_graph.hpp),
+// for renderers that schedule their passes in it: the denoiser's transient images then share memory
+// with yours, and it reads your G-buffer in its packed layout without a conversion pass.
+// asvgf::Denoiser (asvgf/denoiser.hpp) is this call over imported images; our renderer
+// (pipeline/renderer/frame_graph.cpp) and the tests use it directly.
+//
+// One call declares A-SVGF's gradient reconstruction (gradient, gradient_atrous x
+// settings.gradient_iterations), temporal accumulation, variance, the a-trous iterations and
+// composite over images the caller declared in the graph.
 #pragma once
 
 #include <optional>
 #include <string>
 
-#include "denoiser/graph/render_graph.hpp"
-#include "denoiser/passes/compute_pass.hpp"
-#include "denoiser/passes/denoise_settings.hpp"
+#include "asvgf/compute_pass.hpp"
+#include "asvgf/denoise_settings.hpp"
+#include "asvgf/render_graph.hpp"
+#include "asvgf/sanitize_counters.hpp"
 
 namespace asvgf::passes {
 
-// How much of the chain runs: None composites the input as it is (raw samples, an accumulation);
-// Temporal is an exponential moving average (EMA); Spatiotemporal adds variance and the a-trous
-// iterations (SVGF; with a gradient and settings.adaptive, A-SVGF).
-enum class Filter { None, Temporal, Spatiotemporal };
-
-struct DenoiserInputs {
+struct GraphDenoiserInputs {
   graph::ResourceId illumination = 0;  // read: RGBA32F demodulated radiance of this frame
   graph::ResourceId motion = 0;        // read: RGBA32F, xy = previous minus current pixel position
-  graph::ResourceId depth_normal = 0;  // read, and its history: persistent RGBA32F (see common/denoise.glsl)
-  graph::ResourceId albedo = 0;        // read: RGBA16F, what composite re-modulates by
-  graph::ResourceId counters = 0;      // SanitizeCounters::import of this graph
-  graph::ResourceId hdr = 0;           // written by composite: RGBA32F linear radiance
-  graph::ResourceId display = 0;       // written by composite: RGBA8 tonemapped sRGB
+  // read, and its history: persistent RGBA32F, the packed surface: x linear view depth, y its
+  // gradient max(|dz/dx|, |dz/dy|), zw the octahedral-encoded unit normal (shaders/common/octahedral.glsl);
+  // background where x is not finite, <= 0 or >= kBackgroundDepth (asvgf::is_background_depth).
+  graph::ResourceId depth_normal = 0;
+  graph::ResourceId albedo = 0;    // read: RGBA16F, what composite re-modulates by
+  graph::ResourceId counters = 0;  // SanitizeCounters::import of this graph
+  graph::ResourceId hdr = 0;       // written by composite: RGBA32F linear radiance
+  graph::ResourceId display = 0;   // written by composite: RGBA8 tonemapped sRGB
   // A-SVGF with GradientSource::Reshaded: last frame's luminance forward-projected into this
   // frame's 3x3 strata (ceil(w/3) x ceil(h/3), RGBA32F, xy used; gradient_select/gradient_resolve
   // write it). Absent: constant alpha. With GradientSource::Reprojected the chain estimates the
@@ -44,7 +48,7 @@ struct DenoiserInputs {
   std::optional<graph::ResourceId> specular_motion;
 };
 
-struct DenoiserOutputs {
+struct GraphDenoiserOutputs {
   graph::ResourceId filtered = 0;  // what composite modulated: the last a-trous output, the EMA, or the input
   std::optional<graph::ResourceId> gradient;       // reconstructed (delta^, Delta^), when the gradient passes run
   std::optional<graph::ResourceId> moments;        // persistent (E[l], E[l^2], n)
@@ -54,7 +58,10 @@ struct DenoiserOutputs {
   std::optional<graph::ResourceId> specular;       // the specular chain's `filtered`, with two signals
 };
 
-DenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipelines, const DenoiserInputs& in,
-                             const DenoiseSettings& settings, Filter filter);
+// `method` nothing: no filter, composite shows the illumination as it is (raw samples, an
+// accumulation). Ema: temporal accumulation at constant alpha; Svgf: + variance and the a-trous
+// iterations; Asvgf: + the gradient's adaptive alpha (gradient_prev, or GradientSource::Reprojected).
+GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipelines, const GraphDenoiserInputs& in,
+                                  const DenoiseSettings& settings, std::optional<DenoiseMethod> method);
 
 }  // namespace asvgf::passes

@@ -1,4 +1,4 @@
-// denoiser/graph/graph_runtime.hpp: compiling and executing render graphs frame after frame.
+// asvgf/graph_runtime.hpp: compiling and executing render graphs frame after frame.
 //
 // The runtime owns the HAL resources behind graph resources: a pool of transient images and
 // buffers (shared by transients whose lifetimes do not overlap), two versions of every persistent
@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "asvgf/compiled_frame.hpp"
 #include "asvgf/denoiser_stats.hpp"
-#include "denoiser/graph/compiled_frame.hpp"
-#include "denoiser/graph/render_graph.hpp"
+#include "asvgf/render_graph.hpp"
 
 namespace asvgf::graph {
 
@@ -37,8 +37,7 @@ class PassContext {
 
  private:
   friend class GraphRuntime;
-  PassContext(class GraphRuntime& runtime, hal::CommandList& commands, const CompiledFrame& frame,
-              const PassDecl& pass)
+  PassContext(class GraphRuntime& runtime, hal::CommandList& commands, const CompiledFrame& frame, const PassDecl& pass)
       : runtime_(runtime), commands_(commands), compiled_(frame), pass_(pass) {}
   void check_declared(ResourceId id, bool history) const;
   GraphRuntime& runtime_;
@@ -78,7 +77,7 @@ class GraphRuntime {
     std::uint32_t width = 0, height = 0;
     hal::Format format = hal::Format::Undefined;
     std::uint64_t size = 0;
-    hal::Resource handle;  // created on first execute
+    hal::Resource handle;                      // created on first execute
     hal::State state = hal::State::Undefined;  // at the end of the last executed frame
     bool pending = false;                      // accessed since its last barrier
   };
@@ -105,7 +104,7 @@ class GraphRuntime {
   bool binding_checks_ = true;
   std::uint64_t frame_ = 0;
   std::vector<Slot> slots_;
-  std::map<std::string, Persistent> persistent_;  // by name: graphs are rebuilt every frame
+  std::map<std::string, Persistent> persistent_;        // by name: graphs are rebuilt every frame
   std::vector<std::array<hal::Resource, 2>> resolved_;  // per resource of the frame executing: now, history
   std::map<std::string, hal::BindingSetHandle> binding_sets_;
   hal::TimerQueriesHandle timers_;

@@ -1,9 +1,9 @@
-# Shaders of the frame's visibility, path tracing and gradient-sample passes. Tracing shaders come
+# Our renderer's shaders: visibility, path tracing and gradient-sample passes. Tracing shaders come
 # in two variants: ray queries, and the software BVH for devices without them.
-asvgf_add_shader(gbuffer SOURCE frame/gbuffer.comp
+asvgf_add_shader(gbuffer SOURCE renderer/gbuffer.comp
                  VARIANTS rayquery=TRACE_RAY_QUERY software=TRACE_SOFTWARE)
 # The _split variants write diffuse and specular signals apart (scenes with glossy materials).
-asvgf_add_shader(pathtrace SOURCE frame/pathtrace.comp
+asvgf_add_shader(pathtrace SOURCE renderer/pathtrace.comp
                  VARIANTS rayquery=TRACE_RAY_QUERY software=TRACE_SOFTWARE
                           rayquery_gradients=TRACE_RAY_QUERY,GRADIENT_SAMPLES
                           software_gradients=TRACE_SOFTWARE,GRADIENT_SAMPLES
@@ -11,12 +11,12 @@ asvgf_add_shader(pathtrace SOURCE frame/pathtrace.comp
                           software_split=TRACE_SOFTWARE,SPLIT_SPECULAR
                           rayquery_gradients_split=TRACE_RAY_QUERY,GRADIENT_SAMPLES,SPLIT_SPECULAR
                           software_gradients_split=TRACE_SOFTWARE,GRADIENT_SAMPLES,SPLIT_SPECULAR)
-asvgf_add_shader(gradient_clear SOURCE frame/gradient_clear.comp)
-asvgf_add_shader(gradient_select SOURCE frame/gradient_select.comp)
-asvgf_add_shader(gradient_resolve SOURCE frame/gradient_resolve.comp)
-asvgf_add_shader(accumulate SOURCE frame/accumulate.comp)
-asvgf_add_shader(debug_view SOURCE frame/debug_view.comp)
-asvgf_add_shader(specular_motion SOURCE frame/specular_motion.comp)
+asvgf_add_shader(gradient_clear SOURCE renderer/gradient_clear.comp)
+asvgf_add_shader(gradient_select SOURCE renderer/gradient_select.comp)
+asvgf_add_shader(gradient_resolve SOURCE renderer/gradient_resolve.comp)
+asvgf_add_shader(accumulate SOURCE renderer/accumulate.comp)
+asvgf_add_shader(debug_view SOURCE renderer/debug_view.comp)
+asvgf_add_shader(specular_motion SOURCE renderer/specular_motion.comp)
 # Not a frame pass: the benchmark's bandwidth measurement.
-asvgf_add_shader(bandwidth_copy SOURCE frame/bandwidth_copy.comp)
-asvgf_add_shader(export_aovs SOURCE frame/export_aovs.comp)
+asvgf_add_shader(bandwidth_copy SOURCE renderer/bandwidth_copy.comp)
+asvgf_add_shader(export_aovs SOURCE renderer/export_aovs.comp)

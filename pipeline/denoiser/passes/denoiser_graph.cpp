@@ -1,4 +1,6 @@
-#include "denoiser/passes/denoise_passes.hpp"
+// asvgf::passes::add_denoiser (include/asvgf/denoiser_graph.hpp): the method decides which passes
+// are declared; settings only tune them.
+#include "asvgf/denoiser_graph.hpp"
 
 #include <algorithm>
 #include <string>
@@ -14,13 +16,17 @@ namespace asvgf::passes {
 
 namespace {
 
+// How much of the chain runs: None composites the input as it is; Temporal is the EMA;
+// Spatiotemporal adds variance and the a-trous iterations.
+enum class Filter { None, Temporal, Spatiotemporal };
+
 // One signal's temporal filter (and variance and a-trous iterations for Spatiotemporal), with its
 // histories; resources and passes are named with `prefix`.
 struct Chain {
   graph::ResourceId filtered = 0, moments = 0, integrated = 0, variance = 0, color_history = 0;
 };
 Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId signal,
-                const std::string& prefix, const DenoiserInputs& in, std::optional<graph::ResourceId> gradient,
+                const std::string& prefix, const GraphDenoiserInputs& in, std::optional<graph::ResourceId> gradient,
                 const DenoiseSettings& s, Filter filter,
                 std::optional<graph::ResourceId> virtual_motion = std::nullopt) {
   using F = hal::Format;
@@ -68,19 +74,22 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
 
 }  // namespace
 
-DenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipelines, const DenoiserInputs& in,
-                             const DenoiseSettings& s, Filter filter) {
+GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipelines, const GraphDenoiserInputs& in,
+                                  const DenoiseSettings& s, std::optional<DenoiseMethod> method) {
   using F = hal::Format;
   using graph::Lifetime;
   using graph::ResourceId;
   const auto& decl = graph.resource(in.illumination);
   const std::uint32_t w = decl.width, h = decl.height;
-  DenoiserOutputs out;
+  GraphDenoiserOutputs out;
   out.filtered = in.illumination;
+  const Filter filter = !method                        ? Filter::None
+                        : method == DenoiseMethod::Ema ? Filter::Temporal
+                                                       : Filter::Spatiotemporal;
 
-  const bool filtered = s.adaptive && filter != Filter::None;
-  const bool reprojected = filtered && s.gradient_source == GradientSource::Reprojected;
-  if (reprojected || (filtered && in.gradient_prev)) {
+  const bool adaptive = method == DenoiseMethod::Asvgf;
+  const bool reprojected = adaptive && s.gradient_source == GradientSource::Reprojected;
+  if (reprojected || (adaptive && in.gradient_prev)) {
     // Re-shaded: declared on still frames too, so that dump() shows them left out with the reason.
     // Reprojected: runs on every frame, still ones too: its luminance is the next frame's history.
     const bool skip = !reprojected && !in.gradient_skip_reason.empty();

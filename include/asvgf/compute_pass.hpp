@@ -1,4 +1,4 @@
-// denoiser/passes/compute_pass.hpp: what every compute pass shares: pipelines made from the generated shader
+// asvgf/compute_pass.hpp: what every compute pass shares: pipelines made from the generated shader
 // headers (their uniform block checked against the generated C++ struct), and declaring a dispatch in the render graph
 // from one binding list, so that what the graph knows and what the shader binds cannot drift:
 // whether a binding is read or written comes from the shader's reflection, every name must be one
@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-#include "denoiser/graph/graph_runtime.hpp"
+#include "asvgf/graph_runtime.hpp"
 #include "hal/device.hpp"
 
 namespace asvgf::passes {

@@ -1,4 +1,4 @@
-// denoiser/graph/render_graph.hpp: a frame as passes with declared reads and writes.
+// asvgf/render_graph.hpp: a frame as passes with declared reads and writes.
 //
 // A RenderGraph is rebuilt every frame (cheap: names, ids, callbacks). It is compiled by a
 // GraphRuntime (graph_runtime.hpp), which owns the GPU resources across frames: it culls passes
@@ -38,8 +38,8 @@ struct ResourceDecl {
   Lifetime lifetime = Lifetime::Transient;
   std::uint32_t width = 0, height = 0;
   hal::Format format = hal::Format::Undefined;
-  std::uint64_t size = 0;         // buffers
-  hal::Resource imported;         // imported only
+  std::uint64_t size = 0;  // buffers
+  hal::Resource imported;  // imported only
   hal::State imported_state = hal::State::Undefined;
 };
 

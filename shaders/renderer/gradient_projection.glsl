@@ -1,4 +1,4 @@
-// frame/gradient_projection.glsl: A-SVGF forward projection of one of last frame's samples, shared
+// renderer/gradient_projection.glsl: A-SVGF forward projection of one of last frame's samples, shared
 // by gradient_select (which claims strata) and gradient_resolve (which writes for the winners), so
 // that both compute exactly the same thing.
 #ifndef ASVGF_FRAME_GRADIENT_PROJECTION_GLSL

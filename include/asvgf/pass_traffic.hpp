@@ -1,4 +1,4 @@
-// denoiser/graph/pass_traffic.hpp: the bytes each pass of a compiled frame must read and write, from the
+// asvgf/pass_traffic.hpp: the bytes each pass of a compiled frame must read and write, from the
 // graph's declarations: every image it declares (width x height x texel size of its format) and
 // every buffer of known size, each counted once however often the shader touches it. That is the
 // compulsory traffic, which bounds a pass's time from below at a memory bandwidth.
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "denoiser/graph/compiled_frame.hpp"
+#include "asvgf/compiled_frame.hpp"
 
 namespace asvgf::graph {
 
