@@ -5,6 +5,11 @@
 // output keeps the mean within 0.01 of the noise's expectation (0.5), has at most a quarter of the input's standard
 // deviation, holds no NaN or Inf, and the layer said nothing.
 #include <asvgf/denoiser.hpp>
+// Every other public header, so that each installed one compiles from the installed tree alone.
+#include <asvgf/compute_pass.hpp>
+#include <asvgf/denoiser_graph.hpp>
+#include <asvgf/graph_runtime.hpp>
+#include <asvgf/pass_traffic.hpp>
 #include <hal/hal.hpp>
 #include <hal_vulkan/vulkan.hpp>
 
