@@ -66,7 +66,9 @@ GLenum image_access(Access access) {
 
 }  // namespace
 
-GlDevice::GlDevice(const DeviceOptions& options) : options_(options), context_(options.make_current ? Context(options.flavour, options.make_current) : Context(options.flavour)) {
+GlDevice::GlDevice(const DeviceOptions& options)
+    : options_(options),
+      context_(options.make_current ? Context(options.flavour, options.make_current) : Context(options.flavour)) {
   const bool es = options.flavour == Flavour::Gles;
   adapter_.name = gl_string(GL_RENDERER);
   adapter_.driver = gl_string(GL_VENDOR) + " " + gl_string(GL_VERSION);
@@ -105,6 +107,7 @@ GlDevice::~GlDevice() {
     for (auto& [id, p] : pipelines_.all()) glDeleteProgram(p.program);
     for (auto& [id, t] : timers_.all()) glDeleteQueries(static_cast<GLsizei>(t.queries.size()), t.queries.data());
     glDeleteBuffers(1, &uniform_buffer_);
+    if (readback_buffer_) glDeleteBuffers(1, &readback_buffer_);
     glDeleteFramebuffers(1, &read_framebuffer_);
     if (debug_output_) glDebugMessageCallback(nullptr, nullptr);
   } catch (...) {
@@ -306,12 +309,22 @@ void GlDevice::read_buffer(BufferHandle src, std::uint64_t offset, std::span<std
   const BufferObject& b = buffers_.get(src.id, "buffer");
   if (out.empty()) return;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (out.size() > readback_size_) {
+    if (!readback_buffer_) glGenBuffers(1, &readback_buffer_);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, readback_buffer_);
+    glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(out.size()), nullptr, GL_STREAM_READ);
+    check_gl(b.desc.name, "read_buffer (readback buffer)");
+    readback_size_ = out.size();
+  }
   glBindBuffer(GL_COPY_READ_BUFFER, b.buffer);
-  const void* mapped = glMapBufferRange(GL_COPY_READ_BUFFER, static_cast<GLintptr>(offset),
-                                        static_cast<GLsizeiptr>(out.size()), GL_MAP_READ_BIT);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, readback_buffer_);
+  glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, static_cast<GLintptr>(offset), 0,
+                      static_cast<GLsizeiptr>(out.size()));
+  const void* mapped = glMapBufferRange(GL_COPY_WRITE_BUFFER, 0, static_cast<GLsizeiptr>(out.size()), GL_MAP_READ_BIT);
   if (mapped) std::memcpy(out.data(), mapped, out.size());
-  if (mapped) glUnmapBuffer(GL_COPY_READ_BUFFER);
+  if (mapped) glUnmapBuffer(GL_COPY_WRITE_BUFFER);
   glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
   check_gl(b.desc.name, "read_buffer");
   if (!mapped) throw Error(ErrorKind::Backend, b.desc.name, "glMapBufferRange returned nothing");
 }

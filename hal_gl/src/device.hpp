@@ -123,6 +123,11 @@ class GlDevice final : public Device {
   Capabilities capabilities_;
   GLuint uniform_buffer_ = 0;    // refilled (orphaned) for every dispatch's uniform block
   GLuint read_framebuffer_ = 0;  // OpenGL ES reads images back through it
+  // read_buffer copies into this and maps it, never the buffer the passes use: NVIDIA's driver may
+  // move a buffer that is mapped for reading into system memory, where every atomic the passes do
+  // on it crosses the bus.
+  GLuint readback_buffer_ = 0;
+  std::uint64_t readback_size_ = 0;
   bool debug_output_ = false;
   Table<BufferObject> buffers_;
   Table<ImageObject> images_;
