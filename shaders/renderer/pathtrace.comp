@@ -402,7 +402,7 @@ void shade_pixel(ivec2 p) {
 }
 
 // The workgroup's rays, added to the global counter by one invocation: one atomic per pixel on a
-// single address took half of the pass on NVIDIA's OpenGL driver (docs/performance.md).
+// single address serialises every workgroup on it.
 shared uint group_rays;
 
 void main() {
