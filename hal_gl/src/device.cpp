@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 #include "program_dump.hpp"
@@ -64,6 +65,24 @@ GLenum image_access(Access access) {
   return GL_READ_WRITE;
 }
 
+constexpr bool kSpirvShadersByDefault = false;
+
+// Whether programs are loaded as SPIR-V (GL_ARB_gl_spirv) rather than compiled from GLSL, on
+// OpenGL 4.5: ASVGF_GL_SHADERS=glsl or spirv chooses; unset, kSpirvShadersByDefault where the
+// context has the extension. OpenGL ES has no SPIR-V path: it always compiles ESSL.
+bool spirv_shaders(bool es, const std::string& adapter) {
+  const char* chosen = std::getenv("ASVGF_GL_SHADERS");
+  const std::string choice = chosen ? chosen : "";
+  if (!choice.empty() && choice != "glsl" && choice != "spirv")
+    throw Error(ErrorKind::InvalidUsage, "ASVGF_GL_SHADERS", "is '" + choice + "'; valid: glsl, spirv");
+  if (es) return false;
+  const bool available = epoxy_has_gl_extension("GL_ARB_gl_spirv");
+  if (choice.empty()) return available && kSpirvShadersByDefault;
+  if (choice == "spirv" && !available)
+    throw Error(ErrorKind::Unsupported, adapter, "ASVGF_GL_SHADERS=spirv: the context lacks GL_ARB_gl_spirv");
+  return choice == "spirv";
+}
+
 }  // namespace
 
 GlDevice::GlDevice(const DeviceOptions& options)
@@ -78,6 +97,10 @@ GlDevice::GlDevice(const DeviceOptions& options)
   if (es ? version < 31 : version < 45)
     throw Error(ErrorKind::Unsupported, adapter_.name,
                 "the context is " + adapter_.api_version + "; compute needs " + (es ? "OpenGL ES 3.1" : "OpenGL 4.5"));
+  spirv_shaders_ = spirv_shaders(es, adapter_.name);
+  adapter_.api_version += spirv_shaders_ ? ", programs from SPIR-V (GL_ARB_gl_spirv)"
+                          : es           ? ", programs from ESSL"
+                                         : ", programs from GLSL";
   capabilities_.ray_query = false;
   capabilities_.acceleration_structures = false;
   capabilities_.fp16_storage = false;
@@ -189,10 +212,16 @@ PipelineHandle GlDevice::create_pipeline(const ComputePipelineDesc& desc) {
                       adapter_.name + " allows " + std::to_string(gl_int(l.query)) + " in a compute shader");
   }
   const GLuint compute = glCreateShader(GL_COMPUTE_SHADER);
-  const GLchar* text = source.data();
-  const auto length = static_cast<GLint>(source.size());
-  glShaderSource(compute, 1, &text, &length);
-  glCompileShader(compute);
+  const std::string_view spirv = spirv_shaders_ ? shader.source("spirv-gl") : std::string_view{};
+  if (!spirv.empty()) {
+    glShaderBinary(1, &compute, GL_SHADER_BINARY_FORMAT_SPIR_V_ARB, spirv.data(), static_cast<GLsizei>(spirv.size()));
+    glSpecializeShaderARB(compute, "main", 0, nullptr, nullptr);
+  } else {
+    const GLchar* text = source.data();
+    const auto length = static_cast<GLint>(source.size());
+    glShaderSource(compute, 1, &text, &length);
+    glCompileShader(compute);
+  }
   auto log_of = [](GLuint object, bool program) {
     GLint size = 0;
     program ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &size) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &size);

@@ -126,6 +126,8 @@ class GlDevice final : public Device {
   // read_buffer copies into this and maps it, never the buffer the passes use: NVIDIA's driver may
   // move a buffer that is mapped for reading into system memory, where every atomic the passes do
   // on it crosses the bus.
+  // Programs from the shader tool's OpenGL SPIR-V ("spirv-gl") instead of its GLSL.
+  bool spirv_shaders_ = false;
   GLuint readback_buffer_ = 0;
   std::uint64_t readback_size_ = 0;
   bool debug_output_ = false;

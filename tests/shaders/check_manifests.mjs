@@ -1,6 +1,6 @@
 // check_manifests.mjs SHADER_DIR VARIANT...: every variant CMake declared has a reflection JSON,
-// and emitted every target it can: all six without ray queries, SPIR-V, HLSL and MSL with them
-// (and then no WGSL, GLSL or ESSL). Every file a JSON lists exists.
+// and emitted every target it can: all seven without ray queries (OpenGL's SPIR-V among them),
+// SPIR-V, HLSL and MSL with them (and then no WGSL, GLSL, ESSL or OpenGL SPIR-V). Every file a JSON lists exists.
 import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
@@ -14,7 +14,7 @@ for (const variant of variants) {
   }
   const manifest = JSON.parse(readFileSync(path, 'utf8'));
   const emitted = Object.keys(manifest.targets).sort().join(' ');
-  const want = manifest.uses_ray_query ? 'hlsl msl spv' : 'essl glsl hlsl msl spv wgsl';
+  const want = manifest.uses_ray_query ? 'hlsl msl spv' : 'essl gl.spv glsl hlsl msl spv wgsl';
   if (emitted !== want) problems.push(`${variant}: emitted [${emitted}], expected [${want}]`);
   for (const file of Object.values(manifest.targets))
     if (!existsSync(join(dir, file))) problems.push(`${variant}: lists ${file}, which does not exist`);

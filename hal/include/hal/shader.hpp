@@ -17,7 +17,7 @@ namespace hal {
 enum class BindingKind : std::uint8_t {
   UniformBuffer,  // the shader's one parameter block; filled through DispatchDesc::uniforms
   StorageBuffer,
-  SampledImage,   // texture2D read with texelFetch
+  SampledImage,  // texture2D read with texelFetch
   StorageImage,
   AccelerationStructure,
 };
@@ -32,7 +32,7 @@ struct ShaderBinding {
   std::uint32_t binding = 0;
   BindingKind kind = BindingKind::StorageBuffer;
   Access access = Access::Read;
-  std::string_view name;            // the GLSL instance or variable name, used to bind from C++
+  std::string_view name;              // the GLSL instance or variable name, used to bind from C++
   Format format = Format::Undefined;  // storage images only
   // OpenGL unit of this binding's kind (uniform block, SSBO, texture or image unit): GL has no
   // sets, so the shader tool numbers each kind in (set, binding) order and writes the GLSL so.
@@ -45,9 +45,10 @@ struct UniformMember {
   std::uint32_t size = 0;    // bytes
 };
 
-// One translation of a shader for a backend that does not run SPIR-V, named by its language
-// ("glsl": OpenGL GLSL 450, "essl": OpenGL ES GLSL 310, with the gl_binding units). A language a
-// new port needs is one more entry the shader tool writes; no HAL header changes.
+// One translation of a shader for a backend that does not run Vulkan's SPIR-V, named by its language
+// ("glsl": OpenGL GLSL 450, "essl": OpenGL ES GLSL 310, with the gl_binding units; "spirv-gl": the
+// GLSL 450 compiled to SPIR-V for OpenGL 4.5's GL_ARB_gl_spirv, as bytes). A language a new port
+// needs is one more entry the shader tool writes; no HAL header changes.
 struct ShaderSource {
   std::string_view language;
   std::string_view text;

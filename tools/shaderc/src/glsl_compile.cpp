@@ -89,11 +89,14 @@ struct ProcessScope {
   ProcessScope(const ProcessScope&) = delete;
   ProcessScope& operator=(const ProcessScope&) = delete;
 };
+void start_glslang() {
+  static ProcessScope process;
+}
 
 }  // namespace
 
 GlslResult compile_glsl(const Options& options) {
-  static ProcessScope process;
+  start_glslang();
   const fs::path source_path = fs::absolute(options.source);
   const std::string file = source_path.string();
   const std::string text = read_file(source_path);
@@ -134,6 +137,31 @@ GlslResult compile_glsl(const Options& options) {
     throw ToolError(file + ": error: SPIR-V generation failed: " + log);
   result.includes = includer.opened();
   return result;
+}
+
+std::vector<std::uint32_t> compile_gl_spirv(const std::string& glsl, const std::string& shader_name) {
+  start_glslang();
+  glslang::TShader shader(EShLangCompute);
+  const char* strings[] = {glsl.c_str()};
+  const int lengths[] = {static_cast<int>(glsl.size())};
+  shader.setStringsWithLengths(strings, lengths, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientOpenGL, 100);
+  shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+  const auto messages = static_cast<EShMessages>(EShMsgSpvRules);
+  const std::string what = shader_name + ": OpenGL SPIR-V: ";
+  if (!shader.parse(GetDefaultResources(), 450, false, messages))
+    throw ToolError(what + "glslang rejects the GLSL 450 translation:\n" + shader.getInfoLog());
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages)) throw ToolError(what + "link failed:\n" + std::string(program.getInfoLog()));
+  std::vector<std::uint32_t> spirv;
+  spv::SpvBuildLogger logger;
+  glslang::SpvOptions spv_options;
+  spv_options.disableOptimizer = true;  // SPIRV-Tools runs next, with validation
+  glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), spirv, &logger, &spv_options);
+  if (spirv.empty()) throw ToolError(what + "SPIR-V generation failed: " + logger.getAllMessages());
+  return spirv;
 }
 
 }  // namespace shaderc

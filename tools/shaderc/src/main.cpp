@@ -75,14 +75,21 @@ int run(const Options& o) {
   targets.emitted["spv"] = o.output("spv").filename().string();
 
   const bool rq = reflection.uses_ray_query;
-  std::string glsl_text, essl_text;  // embedded in the header for the OpenGL backend
+  std::string glsl_text, essl_text;     // embedded in the header for the OpenGL backend
+  std::vector<std::uint32_t> gl_spirv;  // the same, as SPIR-V for GL_ARB_gl_spirv
   if (rq) {
     skip(o, targets, "glsl", "ray queries need Vulkan GLSL; OpenGL has no acceleration structures");
     skip(o, targets, "essl", "ray queries need Vulkan GLSL; OpenGL ES has no acceleration structures");
+    skip(o, targets, "gl.spv", "ray queries need Vulkan; OpenGL has no acceleration structures");
     skip(o, targets, "wgsl", "WebGPU and naga have no ray queries");
   } else {
     cross_target(o, rq, "glsl", "GLSL 450", targets, [&] { return glsl_text = to_glsl(spirv, reflection, false); });
     cross_target(o, rq, "essl", "ESSL 310", targets, [&] { return essl_text = to_glsl(spirv, reflection, true); });
+    gl_spirv = optimize_spirv(compile_gl_spirv(glsl_text, o.full_name()), o.full_name(), SpirvEnv::OpenGl45);
+    validate_spirv(gl_spirv, o.full_name(), SpirvEnv::OpenGl45);
+    write_if_changed(o.output("gl.spv"),
+                     std::string_view(reinterpret_cast<const char*>(gl_spirv.data()), gl_spirv.size() * 4));
+    targets.emitted["gl.spv"] = o.output("gl.spv").filename().string();
   }
   cross_target(o, rq, "hlsl", rq ? "HLSL SM 6.5" : "HLSL SM 6.0", targets, [&] { return to_hlsl(spirv, rq); });
   cross_target(o, rq, "msl", rq ? "MSL 2.3" : "MSL 2.1", targets, [&] { return to_msl(spirv, rq); });
@@ -93,7 +100,7 @@ int run(const Options& o) {
 
   write_if_changed(o.output("json"), json_text(o, reflection, targets));
   const fs::path header = o.header_dir / (o.full_name() + ".hpp");
-  write_if_changed(header, header_text(o, reflection, spirv, glsl_text, essl_text));
+  write_if_changed(header, header_text(o, reflection, spirv, glsl_text, essl_text, gl_spirv));
 
   if (!o.depfile.empty()) {
     std::string dep = depfile_escape(fs::absolute(header)) + ":";

@@ -8,7 +8,9 @@
 namespace shaderc {
 namespace {
 
-constexpr spv_target_env kEnv = SPV_ENV_VULKAN_1_2;
+spv_target_env target_env(SpirvEnv env) {
+  return env == SpirvEnv::OpenGl45 ? SPV_ENV_OPENGL_4_5 : SPV_ENV_VULKAN_1_2;
+}
 
 spvtools::MessageConsumer collect(std::string& log) {
   return [&log](spv_message_level_t, const char*, const spv_position_t& pos, const char* message) {
@@ -18,9 +20,10 @@ spvtools::MessageConsumer collect(std::string& log) {
 
 }  // namespace
 
-std::vector<std::uint32_t> optimize_spirv(const std::vector<std::uint32_t>& spirv, const std::string& shader) {
+std::vector<std::uint32_t> optimize_spirv(const std::vector<std::uint32_t>& spirv, const std::string& shader,
+                                          SpirvEnv env) {
   std::string log;
-  spvtools::Optimizer optimizer(kEnv);
+  spvtools::Optimizer optimizer(target_env(env));
   optimizer.SetMessageConsumer(collect(log));
   optimizer.RegisterPerformancePasses();
   std::vector<std::uint32_t> out;
@@ -29,11 +32,13 @@ std::vector<std::uint32_t> optimize_spirv(const std::vector<std::uint32_t>& spir
   return out;
 }
 
-void validate_spirv(const std::vector<std::uint32_t>& spirv, const std::string& shader) {
+void validate_spirv(const std::vector<std::uint32_t>& spirv, const std::string& shader, SpirvEnv env) {
   std::string log;
-  spvtools::SpirvTools tools(kEnv);
+  spvtools::SpirvTools tools(target_env(env));
   tools.SetMessageConsumer(collect(log));
-  if (!tools.Validate(spirv)) throw ToolError(shader + ": error: emitted SPIR-V fails validation (vulkan1.2):\n" + log);
+  const char* name = env == SpirvEnv::OpenGl45 ? "opengl4.5" : "vulkan1.2";
+  if (!tools.Validate(spirv))
+    throw ToolError(shader + ": error: emitted SPIR-V fails validation (" + name + "):\n" + log);
 }
 
 }  // namespace shaderc
