@@ -103,13 +103,7 @@ float prefiltered_variance(ivec2 p) {
   return v;
 }
 
-void main() {
-#if defined(PACKED_OUT) && !defined(PACKED_IN)
-  load_tile();
-  barrier();
-#endif
-  ivec2 p = invocation_pixel();
-  if (!inside(p, params.width, params.height)) return;
+void filter_pixel(ivec2 p) {
   // The centre's depth gradient is only in depth_normal; its colour, depth and normal come from
   // where the taps' do, so that a tap on the centre's own surface weighs exactly as much.
   const Tap c = read_tap(p);
@@ -149,4 +143,15 @@ void main() {
 #ifdef HISTORY
   imageStore(color_history, p, result);
 #endif
+}
+
+// No return in main: one puts the barrier inside the loop construct that inlining makes of it
+// (suspected of stalling NVIDIA's OpenGL SPIR-V path: docs/performance.md).
+void main() {
+#if defined(PACKED_OUT) && !defined(PACKED_IN)
+  load_tile();
+  barrier();
+#endif
+  ivec2 p = invocation_pixel();
+  if (inside(p, params.width, params.height)) filter_pixel(p);
 }

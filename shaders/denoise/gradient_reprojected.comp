@@ -53,14 +53,8 @@ vec2 reproject(ivec2 p) {
   return vec2(l, clamp(lp, 0.0, kFp16Max));
 }
 
-void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 local = ivec2(gl_LocalInvocationID.xy);
-  pixel_sums[local.y * 12 + local.x] = inside(p, params.width, params.height) ? reproject(p) : vec2(-1.0, 0.0);
-  barrier();
-  if (local.x >= 4 || local.y >= 3) return;
-  ivec2 s = ivec2(gl_WorkGroupID.xy) * ivec2(4, 3) + local;
-  if (!inside(s, params.gradient_width, params.gradient_height)) return;
+// The stratum's sum over its 3x3 pixels (their values in pixel_sums).
+void write_stratum(ivec2 local, ivec2 s) {
   float sum_cur = 0.0, sum_prev = 0.0;
   for (int i = 0; i < 9; ++i) {
     vec2 v = pixel_sums[(3 * local.y + i / 3) * 12 + 3 * local.x + i % 3];
@@ -70,4 +64,14 @@ void main() {
   }
   vec2 result = vec2(sum_cur - sum_prev, max(sum_cur, sum_prev));
   imageStore(gradient, s, vec4(clamp(result, vec2(-kFp16Max), vec2(kFp16Max)), 0.0, 0.0));
+}
+
+// No return in main: one puts the barrier inside the loop construct that inlining makes of it.
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 local = ivec2(gl_LocalInvocationID.xy);
+  pixel_sums[local.y * 12 + local.x] = inside(p, params.width, params.height) ? reproject(p) : vec2(-1.0, 0.0);
+  barrier();
+  ivec2 s = ivec2(gl_WorkGroupID.xy) * ivec2(4, 3) + local;
+  if (local.x < 4 && local.y < 3 && inside(s, params.gradient_width, params.gradient_height)) write_stratum(local, s);
 }
