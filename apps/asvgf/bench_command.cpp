@@ -88,15 +88,16 @@ int run_bench(BenchOptions& o) {
       measure_copy_bandwidth(*device, std::min(copy_bytes, device->capabilities().max_buffer_size), 20);
   const double per_ms = bandwidth ? bandwidth->bytes_per_second * 1e-3 : 0.0;  // bytes per millisecond
 
+  const double pixels = double(settings.width) * double(settings.height);
   auto row = [&](const std::string& name, double ms, const Floor& f) {
-    std::printf("%-22s %10.3f %10.2f", name.c_str(), ms, double(f.bytes) / 1e6);
+    std::printf("%-22s %10.3f %10.2f %8.1f", name.c_str(), ms, double(f.bytes) / 1e6, double(f.bytes) / pixels);
     if (per_ms > 0 && f.bytes > 0)
       std::printf(" %10.4f %8.1f", double(f.bytes) / per_ms, ms / (double(f.bytes) / per_ms));
     else
       std::printf(" %10s %8s", "-", "-");
     std::printf("%s\n", f.counted ? "" : "  + scene reads");
   };
-  std::printf("\n%-22s %10s %10s %10s %8s\n", "pass", "ms", "MB moved", "floor ms", "x floor");
+  std::printf("\n%-22s %10s %10s %8s %10s %8s\n", "pass", "ms", "MB moved", "B/pixel", "floor ms", "x floor");
   std::vector<double> denoiser_ms(frame_ms.size(), 0.0);
   Floor denoiser;
   for (const auto& p : order) {
@@ -111,8 +112,9 @@ int run_bench(BenchOptions& o) {
   row("denoiser", median(denoiser_ms), denoiser);
   std::printf(
       "  (ms: medians; denoiser: every pass but gbuffer and pathtrace, summed per frame; MB moved: the\n"
-      "  bytes each pass's declared images and buffers hold, read plus written, each once; + scene reads:\n"
-      "  the pass also traverses the scene, whose reads the floor leaves out)\n");
+      "  bytes each pass's declared images and buffers hold, read plus written, each once; B/pixel: the\n"
+      "  same over the frame's pixels; + scene reads: the pass also traverses the scene, whose reads the\n"
+      "  floor leaves out)\n");
   if (bandwidth)
     std::printf("\ncopy bandwidth:        %.3f TB/s (a %llu MiB buffer copy, read + written, median of 20: %.4f ms)\n",
                 bandwidth->bytes_per_second * 1e-12, static_cast<unsigned long long>(bandwidth->bytes >> 20),
