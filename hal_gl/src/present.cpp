@@ -1,6 +1,6 @@
 // Presentation on an adopted window context: a linear blit into the default framebuffer.
 #include "device.hpp"
-#include "hal/validate.hpp"
+#include "hal/layer.hpp"
 
 namespace hal::gl {
 
@@ -25,7 +25,7 @@ void GlDevice::present(ImageHandle handle, std::uint32_t width, std::uint32_t he
 }
 
 void present(hal::Device& device, hal::ImageHandle image, std::uint32_t width, std::uint32_t height) {
-  auto* gl = dynamic_cast<GlDevice*>(&hal::validate::unwrap(device));
+  auto* gl = dynamic_cast<GlDevice*>(&hal::backend_of(device));
   if (!gl) throw Error(ErrorKind::InvalidUsage, device.adapter().name, "hal::gl::present needs an OpenGL device");
   gl->present(image, width, height);
 }

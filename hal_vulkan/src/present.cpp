@@ -8,7 +8,7 @@
 #include <array>
 
 #include "check.hpp"
-#include "hal/validate.hpp"
+#include "hal/layer.hpp"
 #include "command_list.hpp"
 #include "device.hpp"
 #include "hal_vulkan/presenter.hpp"
@@ -142,7 +142,7 @@ struct Presenter::Impl {
 
 Presenter::Presenter(hal::Device& device, GLFWwindow* window, bool vsync) {
   // A device behind the validation layer presents through the Vulkan device it wraps.
-  auto* vulkan = dynamic_cast<VulkanDevice*>(&hal::validate::unwrap(device));
+  auto* vulkan = dynamic_cast<VulkanDevice*>(&hal::backend_of(device));
   if (!vulkan) throw Error(ErrorKind::InvalidUsage, "presenter", "the device is not a Vulkan device");
   if (!window) throw Error(ErrorKind::InvalidUsage, "presenter", "no window");
   if (!vulkan->swapchain_enabled())

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hal/hal.hpp"
+#include "hal/layer.hpp"
 #include "hal/validate.hpp"
 
 namespace conformance {
@@ -41,7 +42,7 @@ class TestDevice {
     device_ = hal::validate::wrap(backend.create(messages_));
   }
   ~TestDevice() {
-    if (collect_ && device_) collect_(hal::validate::unwrap(*device_), messages_);
+    if (collect_ && device_) collect_(hal::backend_of(*device_), messages_);
     device_.reset();
     for (const auto& m : messages_) FAIL_CHECK(backend_ << " reported: " << m);
   }

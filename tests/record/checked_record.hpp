@@ -4,13 +4,14 @@
 
 #include <memory>
 
+#include "hal/layer.hpp"
 #include "hal/validate.hpp"
 #include "hal_record/record_device.hpp"
 
 struct CheckedRecord {
   explicit CheckedRecord(hal::record::RecordOptions options = {})
       : checked(hal::validate::wrap(std::make_unique<hal::record::RecordDevice>(options))),
-        record(static_cast<hal::record::RecordDevice&>(hal::validate::unwrap(*checked))),
+        record(static_cast<hal::record::RecordDevice&>(hal::backend_of(*checked))),
         device(*checked) {}
   std::unique_ptr<hal::Device> checked;
   hal::record::RecordDevice& record;

@@ -25,11 +25,6 @@ namespace hal::validate {
 // A device that checks every call and forwards it to `inner`. Handles are `inner`'s own.
 std::unique_ptr<Device> wrap(std::unique_ptr<Device> inner);
 
-// The backend under a wrapped device and any other layer (hal/layer.hpp: fault injection), for
-// backend-specific calls such as presentation or the recording HAL's reports; `device` itself when
-// it is not a layer.
-Device& unwrap(Device& device);
-
 // True when a binding of `kind` can be bound to a resource of `resource` kind.
 bool binding_accepts(BindingKind kind, ResourceKind resource);
 

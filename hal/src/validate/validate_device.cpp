@@ -336,6 +336,4 @@ std::unique_ptr<Device> wrap(std::unique_ptr<Device> inner) {
   return std::make_unique<ValidatingDevice>(std::move(inner));
 }
 
-Device& unwrap(Device& device) { return backend_of(device); }
-
 }  // namespace hal::validate
