@@ -8,6 +8,9 @@
 // reads the variance pass's RGBA16F image and its last writes RGBA16F for composite. PACKED_OUT
 // from an RGBA16F input is the first iteration (step 1), which reads its taps from a shared-memory
 // tile. HISTORY also writes the result to the colour history (the history tap).
+// The packed texel has no room for the depth gradient, which only the centre needs: the first
+// iteration copies it from depth_normal into an R32F image and the packed-in iterations read that
+// (4 bytes a pixel instead of depth_normal's 16).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -31,7 +34,11 @@ layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec4 texels[]; }
 #else
 layout(set = 0, binding = 1) uniform texture2D color_in;  // rgb colour, a variance
 #endif
+#ifdef PACKED_IN
+layout(set = 0, binding = 2) uniform texture2D depth_gradient;
+#else
 layout(set = 0, binding = 2) uniform texture2D depth_normal;
+#endif
 #ifdef PACKED_OUT
 layout(set = 0, binding = 3, std430) writeonly buffer ColorOut { uvec4 texels[]; } color_out;
 #else
@@ -39,6 +46,9 @@ layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D color_out;
 #endif
 #ifdef HISTORY
 layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_history;
+#endif
+#if defined(PACKED_OUT) && !defined(PACKED_IN)
+layout(set = 0, binding = 5, r32f) writeonly uniform image2D depth_gradient_out;
 #endif
 
 ivec2 clamp_pixel(ivec2 q) { return clamp(q, ivec2(0), ivec2(params.width, params.height) - 1); }
@@ -107,7 +117,12 @@ void filter_pixel(ivec2 p) {
   // The centre's depth gradient is only in depth_normal; its colour, depth and normal come from
   // where the taps' do, so that a tap on the centre's own surface weighs exactly as much.
   const Tap c = read_tap(p);
-  Surface center = Surface(c.z, texelFetch(depth_normal, p, 0).y, c.n);
+#ifdef PACKED_IN
+  const float dz = texelFetch(depth_gradient, p, 0).x;
+#else
+  const float dz = texelFetch(depth_normal, p, 0).y;
+#endif
+  Surface center = Surface(c.z, dz, c.n);
   vec4 result = c.color;
   if (hit(center)) {
     float lp = luminance(c.color.rgb);
@@ -137,6 +152,9 @@ void filter_pixel(ivec2 p) {
   result = clamp_fp16(result);
 #ifdef PACKED_OUT
   color_out.texels[p.y * int(params.width) + p.x] = pack_filter_texel(result, center.z, center.n);
+#ifndef PACKED_IN
+  imageStore(depth_gradient_out, p, vec4(dz, 0.0, 0.0, 0.0));
+#endif
 #else
   imageStore(color_out, p, result);
 #endif

@@ -513,11 +513,15 @@ TEST_CASE(
     // A history tap on the first and on a middle iteration (both variants; a chain has one).
     const auto history_first = g.add_image("color_history.1", uw, uh, F::RGBA16F, Lifetime::Persistent);
     const auto history = g.add_image("color_history.2", uw, uh, F::RGBA16F, Lifetime::Persistent);
-    passes::add_atrous(g, pipelines, {harness.input(g, "color_in", color, F::RGBA16F), dn_in, first, history_first}, 0,
-                       settings);
-    passes::add_atrous(g, pipelines, {first, dn_in, middle, history}, 1, settings);
-    passes::add_atrous(g, pipelines, {middle, dn_in, last}, 2, settings);
-    ImageD got_first, got_middle, got_last, got_history_first, got_history;
+    const auto depth_gradient = g.add_image("depth_gradient", uw, uh, F::R32F);
+    passes::add_atrous(
+        g, pipelines,
+        {harness.input(g, "color_in", color, F::RGBA16F), dn_in, first, history_first, "", depth_gradient}, 0,
+        settings);
+    passes::add_atrous(g, pipelines, {first, dn_in, middle, history, "", depth_gradient}, 1, settings);
+    passes::add_atrous(g, pipelines, {middle, dn_in, last, std::nullopt, "", depth_gradient}, 2, settings);
+    ImageD got_first, got_middle, got_last, got_history_first, got_history, got_depth_gradient;
+    harness.readback(g, depth_gradient, &got_depth_gradient);
     harness.readback_buffer(g, first, w, h, 4, &got_first);
     harness.readback_buffer(g, middle, w, h, 4, &got_middle);
     harness.readback(g, last, &got_last);
@@ -560,18 +564,36 @@ TEST_CASE(
         if (!depth_kept || !normal_kept) ++packing_errors;
       }
     CHECK(packing_errors == 0);
+    // The centre's depth gradient, which the packed iterations read from its own image, to the bit.
+    int gradient_errors = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) gradient_errors += got_depth_gradient.at(x, y, 0) != dn_q.at(x, y, 1);
+    CHECK(gradient_errors == 0);
   }
   // The shared-memory tile that writes the first packed texels assumes step 1.
   RenderGraph g;
   const auto img = g.add_image("color_in", 8, 8, F::RGBA16F), dn = g.add_image("depth_normal", 8, 8, F::RGBA32F);
-  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("out", 8 * 8 * 16)}, 1, settings),
+  const auto dz = g.add_image("depth_gradient", 8, 8, F::R32F);
+  CHECK_THROWS_AS(
+      passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("out", 8 * 8 * 16), std::nullopt, "", dz}, 1, settings),
+      std::invalid_argument);
+  // Packed texels carry no depth gradient: without its image, the next iteration would have none.
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("no_gradient", 8 * 8 * 16)}, 0, settings),
                   std::invalid_argument);
   // A buffer or image that does not cover depth_normal would be read or written out of range.
-  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("small", 8 * 8 * 16 - 16)}, 0, settings),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("small", 8 * 8 * 16 - 16), std::nullopt, "", dz}, 0,
+                         settings),
+      std::invalid_argument);
   CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_image("wide", 9, 8, F::RGBA16F)}, 0, settings),
                   std::invalid_argument);
-  CHECK_NOTHROW(passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("fits", 8 * 8 * 16)}, 0, settings));
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines,
+                                     {img, dn, g.add_buffer("narrow_gradient", 8 * 8 * 16), std::nullopt, "",
+                                      g.add_image("depth_gradient.small", 8, 7, F::R32F)},
+                                     0, settings),
+                  std::invalid_argument);
+  CHECK_NOTHROW(
+      passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("fits", 8 * 8 * 16), std::nullopt, "", dz}, 0, settings));
 }
 
 TEST_CASE(

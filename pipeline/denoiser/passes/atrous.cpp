@@ -41,8 +41,12 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
   const bool packed_out = graph.resource(r.color_out).kind == hal::ResourceKind::Buffer;
   if (packed_out && !packed_in && iteration != 0)
     throw std::invalid_argument("add_atrous: packed filter texels from an RGBA16F input only at iteration 0 (step 1)");
+  if ((packed_in || packed_out) && !r.depth_gradient)
+    throw std::invalid_argument("add_atrous: a packed iteration needs the depth_gradient image");
   // Every image and buffer must cover depth_normal's size, over which the pass dispatches.
-  for (const graph::ResourceId id : {r.color_in, r.color_out}) {
+  std::vector<graph::ResourceId> covering{r.color_in, r.color_out};
+  if (r.depth_gradient) covering.push_back(*r.depth_gradient);
+  for (const graph::ResourceId id : covering) {
     const auto& other = graph.resource(id);
     const bool covers = other.kind == hal::ResourceKind::Buffer
                             ? other.size >= std::uint64_t{16} * decl.width * decl.height
@@ -53,7 +57,12 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
   }
   const Uniforms u{decl.width, decl.height, 1 << iteration, static_cast<std::uint32_t>(s.kernel),
                    s.sigma_z,  s.sigma_n,   s.sigma_l};
-  std::vector<Binding> bindings{{"color_in", r.color_in}, {"depth_normal", r.depth_normal}, {"color_out", r.color_out}};
+  std::vector<Binding> bindings{{"color_in", r.color_in}, {"color_out", r.color_out}};
+  if (packed_in)
+    bindings.push_back({"depth_gradient", *r.depth_gradient});
+  else
+    bindings.push_back({"depth_normal", r.depth_normal});
+  if (packed_out && !packed_in) bindings.push_back({"depth_gradient_out", *r.depth_gradient});
   if (r.color_history) bindings.push_back({"color_history", *r.color_history});
   const hal::ShaderInfo& shader = atrous_shader(packed_in, packed_out, r.color_history.has_value());
   const auto pipeline = pipelines.get<Uniforms>(shader);

@@ -52,6 +52,7 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   add_variance(graph, pipelines, {c.integrated, c.moments, in.depth_normal, current, prefix}, s);
   const std::uint64_t range = pipelines.device().capabilities().max_storage_buffer_range;
   const std::uint64_t max_storage_binding = range ? range : std::uint64_t{1} << 27;  // 0: not known
+  std::optional<ResourceId> depth_gradient;  // for the packed iterations (denoiser/passes/atrous.hpp)
   for (int i = 0; i < s.atrous_iterations; ++i) {
     // Packed filter texels between the 5x5 kernel's iterations: one load a tap (denoiser/passes/atrous.hpp).
     // The 3x3 box's 8 taps gain less than the wider texel costs (measured: docs/performance.md).
@@ -62,10 +63,11 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
     const bool packed =
         i + 1 < s.atrous_iterations && s.kernel == AtrousKernel::B3Spline && packed_bytes <= max_storage_binding;
     const ResourceId next = packed ? graph.add_buffer(name, packed_bytes) : graph.add_image(name, w, h, F::RGBA16F);
-    add_atrous(
-        graph, pipelines,
-        {current, in.depth_normal, next, i == s.history_tap ? std::optional(c.color_history) : std::nullopt, prefix}, i,
-        s);
+    if (packed && !depth_gradient) depth_gradient = graph.add_image(prefix + "depth_gradient", w, h, F::R32F);
+    add_atrous(graph, pipelines,
+               {current, in.depth_normal, next, i == s.history_tap ? std::optional(c.color_history) : std::nullopt,
+                prefix, depth_gradient},
+               i, s);
     current = next;
   }
   c.filtered = current;
