@@ -2,6 +2,10 @@
 // at 1/3 resolution (A-SVGF sec. 5.2), dispatched k times with step 2^i. Each stratum is guided by
 // its centre pixel's depth and normal; 3x3 binomial kernel. No luminance weight: the gradient
 // itself is what is being reconstructed.
+// The guide is depth_normal at each stratum's centre pixel: 1 texel in 9. Variants: GUIDE_OUT (the
+// first of several iterations) also writes those texels into a 1/3-resolution image; GUIDE_IN (the
+// later ones) reads them there instead of depth_normal (whose every iteration counted 16 bytes a
+// pixel against the strata's 1.8).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -20,16 +24,36 @@ layout(set = 0, binding = 0) uniform Params {
   float sigma_n;
 } params;
 layout(set = 0, binding = 1) uniform texture2D gradient_in;
+#ifdef GUIDE_IN
+layout(set = 0, binding = 2) uniform texture2D strata_guide;
+#else
 layout(set = 0, binding = 2) uniform texture2D depth_normal;
+#endif
 layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D gradient_out;
+#ifdef GUIDE_OUT
+layout(set = 0, binding = 4, rgba32f) writeonly uniform image2D strata_guide_out;
+#endif
 
 ivec2 guide_pixel(ivec2 s) { return min(3 * s + 1, ivec2(params.width, params.height) - 1); }
+
+// depth_normal's texel at stratum s's centre pixel.
+vec4 guide_texel(ivec2 s) {
+#ifdef GUIDE_IN
+  return texelFetch(strata_guide, s, 0);
+#else
+  return texelFetch(depth_normal, guide_pixel(s), 0);
+#endif
+}
 
 void main() {
   ivec2 s = invocation_pixel();
   if (!inside(s, params.gradient_width, params.gradient_height)) return;
   ivec2 gp = guide_pixel(s);
-  Surface center = surface_from(texelFetch(depth_normal, gp, 0));
+  const vec4 center_texel = guide_texel(s);
+#ifdef GUIDE_OUT
+  imageStore(strata_guide_out, s, center_texel);
+#endif
+  Surface center = surface_from(center_texel);
   vec2 sum = vec2(0.0);
   float weights = 0.0;
   for (int dy = -1; dy <= 1; ++dy) {
@@ -41,7 +65,7 @@ void main() {
       if (dx != 0 || dy != 0) {
         ivec2 gq = guide_pixel(q);
         if (hit(center)) {
-          Surface other = surface_from(texelFetch(depth_normal, gq, 0));
+          Surface other = surface_from(guide_texel(q));
           float dist = float(abs(gq.x - gp.x) + abs(gq.y - gp.y));
           w *= weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n);
         }

@@ -1,6 +1,6 @@
 # Denoiser passes (A-SVGF on SVGF); included by shaders/CMakeLists.txt.
 asvgf_add_shader(gradient SOURCE denoise/gradient.comp)
-asvgf_add_shader(gradient_atrous SOURCE denoise/gradient_atrous.comp)
+asvgf_add_shader(gradient_atrous SOURCE denoise/gradient_atrous.comp VARIANTS plain first=GUIDE_OUT rest=GUIDE_IN)
 asvgf_add_shader(temporal SOURCE denoise/temporal.comp
                  VARIANTS constant adaptive=ADAPTIVE constant_virtual=VIRTUAL_MOTION adaptive_virtual=ADAPTIVE,VIRTUAL_MOTION)
 asvgf_add_shader(variance SOURCE denoise/variance.comp)

@@ -206,7 +206,11 @@ TEST_CASE("denoise passes: gradient pass matches the CPU reference") {
   }
 }
 
-TEST_CASE("denoise passes: gradient_atrous pass matches the CPU reference at steps 1, 2 and 4") {
+// Each iteration three ways: guided by depth_normal (plain), also writing the strata guide (the
+// first of several), and guided by that strata guide (the later ones).
+TEST_CASE(
+    "denoise passes: gradient_atrous pass matches the CPU reference at steps 1, 2 and 4, guided by depth_normal or by "
+    "the strata guide") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   asvgf::DenoiseSettings settings;
@@ -218,6 +222,7 @@ TEST_CASE("denoise passes: gradient_atrous pass matches the CPU reference at ste
     for (int y = 0; y < gh; ++y)
       for (int x = 0; x < gw; ++x)
         if (!r.chance(0.3)) grad.at(x, y, 0) = r.uniform(-2, 2), grad.at(x, y, 1) = r.uniform(0, 3);
+    const auto ugw = static_cast<std::uint32_t>(gw), ugh = static_cast<std::uint32_t>(gh);
     for (int iteration = 0; iteration < 3; ++iteration) {
       CAPTURE(w);
       CAPTURE(iteration);
@@ -225,17 +230,42 @@ TEST_CASE("denoise passes: gradient_atrous pass matches the CPU reference at ste
       RenderGraph g;
       const auto gin = harness.input(g, "gradient_in", grad, F::RGBA16F);
       const auto dni = harness.input(g, "depth_normal", dn, F::RGBA32F);
-      const auto out =
-          g.add_image("gradient_out", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh), F::RGBA16F);
-      passes::add_gradient_atrous(g, pipelines, {gin, dni, out}, iteration, settings);
-      ImageD got;
-      harness.readback(g, out, &got);
+      const auto plain = g.add_image("gradient_out.plain", ugw, ugh, F::RGBA16F);
+      const auto first = g.add_image("gradient_out.first", ugw, ugh, F::RGBA16F);
+      const auto rest = g.add_image("gradient_out.rest", ugw, ugh, F::RGBA16F);
+      const auto guide = g.add_image("gradient_guide", ugw, ugh, F::RGBA32F);
+      passes::add_gradient_atrous(g, pipelines, {gin, dni, plain}, iteration, settings);
+      passes::add_gradient_atrous(g, pipelines, {gin, dni, first, guide}, iteration, settings);
+      passes::add_gradient_atrous(g, pipelines, {gin, dni, rest, std::nullopt, guide}, iteration, settings);
+      ImageD got_plain, got_first, got_rest, got_guide;
+      harness.readback(g, plain, &got_plain);
+      harness.readback(g, first, &got_first);
+      harness.readback(g, rest, &got_rest);
+      harness.readback(g, guide, &got_guide);
       harness.run(g);
       const ImageD want = ref::gradient_atrous(quantize(grad, F::RGBA16F), quantize(dn, F::RGBA32F),
                                                {1 << iteration, settings.sigma_z, settings.sigma_n});
-      DENOISE_CHECK_CLOSE(compare(got, want, 2, fp16_tolerance(3)), "gradient_atrous");
+      DENOISE_CHECK_CLOSE(compare(got_plain, want, 2, fp16_tolerance(3)), "gradient_atrous");
+      DENOISE_CHECK_CLOSE(compare(got_first, want, 2, fp16_tolerance(3)), "gradient_atrous writing the strata guide");
+      DENOISE_CHECK_CLOSE(compare(got_rest, want, 2, fp16_tolerance(3)), "gradient_atrous on the strata guide");
+      // The strata guide is depth_normal's texel at each stratum's centre pixel, to the bit.
+      const ImageD dn_q = quantize(dn, F::RGBA32F);
+      int guide_errors = 0;
+      for (int y = 0; y < gh; ++y)
+        for (int x = 0; x < gw; ++x)
+          for (int c = 0; c < 4; ++c)
+            guide_errors += got_guide.at(x, y, c) != dn_q.at(std::min(3 * x + 1, w - 1), std::min(3 * y + 1, h - 1), c);
+      CHECK(guide_errors == 0);
     }
   }
+  RenderGraph g;
+  const auto gin = g.add_image("gradient_in", 3, 3, F::RGBA16F), dn = g.add_image("depth_normal", 8, 8, F::RGBA32F);
+  const auto out = g.add_image("gradient_out", 3, 3, F::RGBA16F), guide = g.add_image("guide", 3, 3, F::RGBA32F);
+  CHECK_THROWS_AS(passes::add_gradient_atrous(g, pipelines, {gin, dn, out, guide, guide}, 1, settings),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      passes::add_gradient_atrous(g, pipelines, {gin, dn, out, g.add_image("wide", 4, 3, F::RGBA32F)}, 0, settings),
+      std::invalid_argument);
 }
 
 namespace {

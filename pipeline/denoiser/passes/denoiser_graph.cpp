@@ -104,9 +104,15 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
       add_gradient(graph, pipelines, {in.illumination, *in.gradient_prev, current, in.specular.has_value()})
           .skip_if(skip, in.gradient_skip_reason);
     }
+    // Several iterations read depth_normal's strata centres from an image of their own.
+    const std::optional<ResourceId> strata_guide =
+        s.gradient_iterations > 1 ? std::optional(graph.add_image("gradient_guide", gw, gh, F::RGBA32F)) : std::nullopt;
     for (int i = 0; i < s.gradient_iterations; ++i) {
       const ResourceId next = graph.add_image("gradient." + std::to_string(i + 1), gw, gh, F::RGBA16F);
-      add_gradient_atrous(graph, pipelines, {current, in.depth_normal, next}, i, s)
+      add_gradient_atrous(
+          graph, pipelines,
+          {current, in.depth_normal, next, i == 0 ? strata_guide : std::nullopt, i > 0 ? strata_guide : std::nullopt},
+          i, s)
           .skip_if(skip, in.gradient_skip_reason);
       current = next;
     }

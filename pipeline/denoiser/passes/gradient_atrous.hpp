@@ -2,6 +2,8 @@
 // one edge-aware a-trous iteration over (delta, Delta) at 1/3 resolution, step 2^iteration.
 #pragma once
 
+#include <optional>
+
 #include "asvgf/compute_pass.hpp"
 #include "asvgf/denoise_settings.hpp"
 #include "asvgf/render_graph.hpp"
@@ -10,10 +12,16 @@ namespace asvgf::passes {
 
 struct GradientAtrousResources {
   graph::ResourceId gradient_in = 0;   // read: 1/3 res RGBA16F (delta, Delta)
-  graph::ResourceId depth_normal = 0;  // read: full-res guide (RGBA32F)
+  graph::ResourceId depth_normal = 0;  // read unless strata_guide_in is given: full-res guide (RGBA32F)
   graph::ResourceId gradient_out = 0;  // written: 1/3 res RGBA16F
+  // 1/3 res RGBA32F: depth_normal's texel at each stratum's centre pixel, the only texels an
+  // iteration reads. The first of several iterations writes it; the others read it instead of
+  // depth_normal.
+  std::optional<graph::ResourceId> strata_guide_out;
+  std::optional<graph::ResourceId> strata_guide_in;
 };
 // Adds "gradient_atrous.<iteration + 1>" with step 2^iteration (sigma_z, sigma_n from settings).
+// Throws std::invalid_argument for both strata guides at once or one not of the gradient's size.
 graph::PassBuilder add_gradient_atrous(graph::RenderGraph& graph, PipelineCache& pipelines,
                                        const GradientAtrousResources& r, int iteration,
                                        const DenoiseSettings& settings);
