@@ -4,10 +4,16 @@
 // (h * w)^2 / (sum h * w)^2. The luminance weight uses the 3x3-binomial-prefiltered variance.
 // Variants: PACKED_IN reads the packed filter texels (common/filter_texel.glsl) the previous
 // iteration wrote to a storage buffer, one per pixel in rows, instead of an RGBA16F colour and
-// depth_normal per tap; PACKED_OUT writes them for the next iteration. A chain's first iteration
-// reads the variance pass's RGBA16F image and its last writes RGBA16F for composite. PACKED_OUT
-// from an RGBA16F input is the first iteration (step 1), which reads its taps from a shared-memory
-// tile. HISTORY also writes the result to the colour history (the history tap).
+// depth_normal per tap; PACKED_OUT writes them for the next iteration; a chain's last iteration
+// writes RGBA16F for composite. PACKED_OUT alone (FIRST_PACKED) is a chain's first iteration
+// (step 1): it reads its taps from a shared-memory tile, and estimates each tile texel's colour and
+// variance from the temporal pass's output and moments (common/variance_estimate.glsl), so the
+// variance pass (48 bytes a pixel and a dispatch) does not run. Without PACKED_* (the box kernel,
+// one iteration, images too large for packed texels) the first iteration reads the variance pass's
+// RGBA16F image. HISTORY also writes the result to the colour history (the history tap). COMPOSITE
+// (a one-signal chain's last, packed-in iteration) composites the result (common/composite.glsl),
+// unrounded, instead of writing it to an RGBA16F image for the composite pass: 16 bytes a pixel and
+// a dispatch fewer.
 // The packed texel has no room for the depth gradient, which only the centre needs: the first
 // iteration copies it from depth_normal into an R32F image and the packed-in iterations read that
 // (4 bytes a pixel instead of depth_normal's 16).
@@ -28,9 +34,20 @@ layout(set = 0, binding = 0) uniform Params {
   float sigma_z;
   float sigma_n;
   float sigma_l;
+  float min_history;  // of the variance estimate (first packed iteration)
+  float exposure;     // COMPOSITE: multiplier applied before the tone curve
+  uint tonemap;       // COMPOSITE: 0 clamp, 1 ACES (Narkowicz)
 } params;
+#ifdef PACKED_OUT
+#ifndef PACKED_IN
+#define FIRST_PACKED
+#endif
+#endif
 #ifdef PACKED_IN
 layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec4 texels[]; } color_in;
+#elif defined(FIRST_PACKED)
+layout(set = 0, binding = 1) uniform texture2D integrated;  // rgb colour, a temporal variance
+layout(set = 0, binding = 6) uniform texture2D moments;     // E[l], E[l^2], history length
 #else
 layout(set = 0, binding = 1) uniform texture2D color_in;  // rgb colour, a variance
 #endif
@@ -41,14 +58,27 @@ layout(set = 0, binding = 2) uniform texture2D depth_normal;
 #endif
 #ifdef PACKED_OUT
 layout(set = 0, binding = 3, std430) writeonly buffer ColorOut { uvec4 texels[]; } color_out;
+#elif defined(COMPOSITE)
+layout(set = 0, binding = 7) uniform texture2D albedo;
+layout(set = 0, binding = 8, rgba32f) writeonly uniform image2D hdr;
+layout(set = 0, binding = 9, rgba8) writeonly uniform image2D display;
+// SanitizeCounters (temporal.comp declares the same block): composite counts zeroed_outputs.
+layout(set = 0, binding = 10) buffer Counters {
+  uint nan_samples;
+  uint inf_samples;
+  uint clamped_samples;
+  uint zeroed_outputs;
+} counters;
+#include "common/composite.glsl"
 #else
 layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D color_out;
 #endif
 #ifdef HISTORY
 layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_history;
 #endif
-#if defined(PACKED_OUT) && !defined(PACKED_IN)
+#ifdef FIRST_PACKED
 layout(set = 0, binding = 5, r32f) writeonly uniform image2D depth_gradient_out;
+#include "common/variance_estimate.glsl"
 #endif
 
 ivec2 clamp_pixel(ivec2 q) { return clamp(q, ivec2(0), ivec2(params.width, params.height) - 1); }
@@ -59,15 +89,15 @@ struct Tap {
   float z;
   vec3 n;
 };
-#if defined(PACKED_OUT) && !defined(PACKED_IN)
+#ifdef FIRST_PACKED
 // Step 1 only: the workgroup's 8x8 pixels and their taps lie in one 12x12 block, fetched once into
-// shared memory (colour as halves, decoded normal): 5.5 fetches a pixel instead of 58, and 2.25
+// shared memory (colour and variance estimated, decoded normal): 5.5 fetches a pixel instead of 58, and 2.25
 // octahedral decodes instead of 24 (docs/performance.md). Entries outside the image hold
 // the nearest pixel's values, which is what the variance prefilter's clamped reads want; taps skip
 // them.
 const int kApron = 2;
 const int kTile = 8 + 2 * kApron;
-shared uvec2 tile_color[kTile * kTile];
+shared vec4 tile_color[kTile * kTile];  // the variance estimate's colour and variance, unrounded
 shared vec4 tile_surface[kTile * kTile];  // depth, normal
 ivec2 tile_origin() { return ivec2(gl_WorkGroupID.xy) * 8 - kApron; }
 int tile_index(ivec2 q) {
@@ -77,18 +107,17 @@ int tile_index(ivec2 q) {
 void load_tile() {
   for (int k = int(gl_LocalInvocationIndex); k < kTile * kTile; k += 64) {
     const ivec2 q = clamp_pixel(tile_origin() + ivec2(k % kTile, k / kTile));
-    const vec4 c = texelFetch(color_in, q, 0);
     const Surface s = surface_from(texelFetch(depth_normal, q, 0));
-    tile_color[k] = pack_color_halves(c);
+    tile_color[k] = estimate_color_variance(q, s);
     tile_surface[k] = vec4(s.z, s.n);
   }
 }
 Tap read_tap(ivec2 q) {
   const int k = tile_index(q);
   const vec4 t = tile_surface[k];
-  return Tap(unpack_color_halves(tile_color[k]), t.x, t.yzw);
+  return Tap(tile_color[k], t.x, t.yzw);
 }
-float variance_at(ivec2 q) { return unpack_color_halves(tile_color[tile_index(q)]).a; }
+float variance_at(ivec2 q) { return tile_color[tile_index(q)].a; }
 #elif defined(PACKED_IN)
 // Storage-buffer loads, not texel fetches: the fetches' issue rate bounded the iteration
 // (docs/performance.md).
@@ -152,9 +181,11 @@ void filter_pixel(ivec2 p) {
   result = clamp_fp16(result);
 #ifdef PACKED_OUT
   color_out.texels[p.y * int(params.width) + p.x] = pack_filter_texel(result, center.z, center.n);
-#ifndef PACKED_IN
+#ifdef FIRST_PACKED
   imageStore(depth_gradient_out, p, vec4(dz, 0.0, 0.0, 0.0));
 #endif
+#elif defined(COMPOSITE)
+  composite_pixel(p, result.rgb);
 #else
   imageStore(color_out, p, result);
 #endif
@@ -166,7 +197,7 @@ void filter_pixel(ivec2 p) {
 // No return in main: one puts the barrier inside the loop construct that inlining makes of it
 // (suspected of stalling NVIDIA's OpenGL SPIR-V path: docs/performance.md).
 void main() {
-#if defined(PACKED_OUT) && !defined(PACKED_IN)
+#ifdef FIRST_PACKED
   load_tile();
   barrier();
 #endif

@@ -8,7 +8,8 @@ asvgf_add_shader(atrous SOURCE denoise/atrous.comp
                  VARIANTS plain history=HISTORY
                           first=PACKED_OUT first_history=PACKED_OUT,HISTORY
                           middle=PACKED_IN,PACKED_OUT middle_history=PACKED_IN,PACKED_OUT,HISTORY
-                          last=PACKED_IN last_history=PACKED_IN,HISTORY)
+                          last=PACKED_IN last_history=PACKED_IN,HISTORY
+                          last_composite=PACKED_IN,COMPOSITE last_history_composite=PACKED_IN,HISTORY,COMPOSITE)
 asvgf_add_shader(composite SOURCE denoise/composite.comp VARIANTS one split=SPLIT)
 asvgf_add_shader(pack_surface SOURCE denoise/pack_surface.comp)
 asvgf_add_shader(gradient_reprojected SOURCE denoise/gradient_reprojected.comp)

@@ -214,6 +214,21 @@ inline ImageD random_color(Random& r, int w, int h, double lo, double hi, double
   return img;
 }
 
+// Moments (E[l], E[l^2] >= E[l]^2, history length n): lengths of 0 (no history), below SVGF's
+// min_history of 4 (the spatial variance estimate) and above.
+inline ImageD random_moments(Random& r, int w, int h) {
+  ImageD moments(w, h, 4);
+  const double lengths[] = {0, 1, 2, 3, 4, 10, 32};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double m1 = r.uniform(0, 4);
+      moments.at(x, y, 0) = static_cast<float>(m1);
+      moments.at(x, y, 1) = static_cast<float>(m1 * m1 + r.uniform(0, 2));
+      moments.at(x, y, 2) = lengths[static_cast<int>(r.uniform(0, 7))];
+    }
+  return moments;
+}
+
 // ---- Comparison --------------------------------------------------------------------------------
 // Largest |got - want| / tolerance(want) over channels [0, channels); <= 1 passes.
 struct Compare {

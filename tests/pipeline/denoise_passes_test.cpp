@@ -435,15 +435,7 @@ TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and
     Random r(51u + static_cast<std::uint32_t>(w));
     const ImageD dn = random_depth_normal(r, w, h);
     const ImageD integrated = random_color(r, w, h, 0, 4, 2);
-    ImageD moments(w, h, 4);
-    const double lengths[] = {0, 1, 2, 3, 4, 10, 32};
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        const double m1 = r.uniform(0, 4);
-        moments.at(x, y, 0) = static_cast<float>(m1);
-        moments.at(x, y, 1) = static_cast<float>(m1 * m1 + r.uniform(0, 2));
-        moments.at(x, y, 2) = lengths[static_cast<int>(r.uniform(0, 7))];
-      }
+    const ImageD moments = random_moments(r, w, h);
     GraphHarness harness(*device);
     RenderGraph g;
     const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
@@ -504,13 +496,15 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
 // Between the first and the last iteration the chain passes packed filter texels (a storage buffer
 // of 4 words a pixel: colour and variance as halves, depth, normal x, y as halves). Each iteration
 // is checked against the reference run on what the previous one wrote (read back and unpacked
-// exactly; the first reads its taps from a shared-memory tile), so the tolerance stays one fp16
+// exactly; the first estimates the variance and reads its taps from a shared-memory tile), so the
+// tolerance stays one fp16
 // store; the packing itself is checked on its own, for normals along every axis and near z = 0.
 TEST_CASE(
     "denoise passes: atrous iterations on packed filter texels match the CPU reference, and the packing keeps depth "
     "and normal") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
+  passes::SanitizeCounters counters(*device);
   asvgf::DenoiseSettings settings;
   for (const auto& size : kSizes) {
     const int w = size[0], h = size[1];
@@ -532,6 +526,7 @@ TEST_CASE(
         dn.at(x, y, 2) = oct[0], dn.at(x, y, 3) = oct[1];
       }
     const ImageD color = random_color(r, w, h, 0, 4, 0.5);
+    const ImageD moments = random_moments(r, w, h);
     const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
     GraphHarness harness(*device);
     RenderGraph g;
@@ -544,13 +539,28 @@ TEST_CASE(
     const auto history_first = g.add_image("color_history.1", uw, uh, F::RGBA16F, Lifetime::Persistent);
     const auto history = g.add_image("color_history.2", uw, uh, F::RGBA16F, Lifetime::Persistent);
     const auto depth_gradient = g.add_image("depth_gradient", uw, uh, F::R32F);
-    passes::add_atrous(
-        g, pipelines,
-        {harness.input(g, "color_in", color, F::RGBA16F), dn_in, first, history_first, "", depth_gradient}, 0,
-        settings);
+    passes::add_atrous(g, pipelines,
+                       {harness.input(g, "integrated", color, F::RGBA16F), dn_in, first, history_first, "",
+                        depth_gradient, harness.input(g, "moments", moments, F::RGBA32F)},
+                       0, settings);
     passes::add_atrous(g, pipelines, {first, dn_in, middle, history, "", depth_gradient}, 1, settings);
     passes::add_atrous(g, pipelines, {middle, dn_in, last, std::nullopt, "", depth_gradient}, 2, settings);
-    ImageD got_first, got_middle, got_last, got_history_first, got_history, got_depth_gradient;
+    // The same last iteration compositing itself, with a history tap on every other size.
+    const ImageD albedo = random_color(r, w, h, 0, 1, 1);
+    const auto hdr = g.add_image("hdr", uw, uh, F::RGBA32F), display = g.add_image("display", uw, uh, F::RGBA8Unorm);
+    const bool composite_tap = w % 2 == 1;
+    const auto history_last = g.add_image("color_history.3", uw, uh, F::RGBA16F, Lifetime::Persistent);
+    passes::add_atrous(
+        g, pipelines,
+        {middle, dn_in, 0, composite_tap ? std::optional(history_last) : std::nullopt, "", depth_gradient, std::nullopt,
+         passes::CompositeResources{0, harness.input(g, "albedo", albedo, F::RGBA16F), hdr, display,
+                                    counters.import(g)}},
+        2, settings);
+    ImageD got_first, got_middle, got_last, got_history_first, got_history, got_depth_gradient, got_hdr, got_display,
+        got_history_last;
+    harness.readback(g, hdr, &got_hdr);
+    harness.readback(g, display, &got_display);
+    if (composite_tap) harness.readback(g, history_last, &got_history_last);
     harness.readback(g, depth_gradient, &got_depth_gradient);
     harness.readback_buffer(g, first, w, h, 4, &got_first);
     harness.readback_buffer(g, middle, w, h, 4, &got_middle);
@@ -563,13 +573,31 @@ TEST_CASE(
     const auto params = [&](int iteration) {
       return ref::AtrousParams{1 << iteration, 0, settings.sigma_z, settings.sigma_n, settings.sigma_l};
     };
-    DENOISE_CHECK_CLOSE(
-        compare(t1.color, ref::atrous(quantize(color, F::RGBA16F), dn_q, params(0)), 4, fp16_tolerance(4)),
-        "first iteration");
+    // The first iteration estimates the variance (the variance pass's reference) as it loads its
+    // tile, so it inherits that estimate's tolerance (the variance pass's test: fp16_tolerance(80));
+    // the a-trous average over normalised weights adds its own rounding, not a larger error. The
+    // reference rounds the estimate to fp16 as the variance pass's image would; the tile keeps fp32,
+    // within the same tolerance.
+    const ImageD color_variance =
+        quantize(ref::variance(quantize(color, F::RGBA16F), quantize(moments, F::RGBA32F), dn_q,
+                               {settings.sigma_z, settings.sigma_n, settings.sigma_l, settings.min_history}),
+                 F::RGBA16F);
+    DENOISE_CHECK_CLOSE(compare(t1.color, ref::atrous(color_variance, dn_q, params(0)), 4, fp16_tolerance(80)),
+                        "first iteration");
     DENOISE_CHECK_CLOSE(compare(t2.color, ref::atrous(t1.color, t1.depth_normal, params(1)), 4, fp16_tolerance(4)),
                         "middle iteration");
     DENOISE_CHECK_CLOSE(compare(got_last, ref::atrous(t2.color, t2.depth_normal, params(2)), 4, fp16_tolerance(4)),
                         "last iteration");
+    // Composited from the same result unrounded: it differs from the image's fp16 value by at most
+    // half an ulp of the light, which times an albedo <= 1 is within two ulps of the radiance.
+    const auto want =
+        ref::composite(got_last, quantize(albedo, F::RGBA16F), settings.exposure, static_cast<int>(settings.tonemap));
+    DENOISE_CHECK_CLOSE(compare(got_hdr, want.hdr, 3, [](double v) { return 2 * fp16_ulp(v) + 1e-5; }),
+                        "last iteration's composite hdr");
+    DENOISE_CHECK_CLOSE(compare(got_display, want.display, 3, [](double) { return 1.0 / 255.0; }),
+                        "last iteration's composite display");
+    if (composite_tap)
+      DENOISE_CHECK_CLOSE(compare(got_history_last, got_last, 4, fp16_tolerance(0)), "last history tap");
     // The same fp32 result, stored by the image format and by packHalf2x16 (rounding may differ).
     DENOISE_CHECK_CLOSE(compare(got_history_first, t1.color, 4, fp16_tolerance(0)), "first history tap");
     DENOISE_CHECK_CLOSE(compare(got_history, t2.color, 4, fp16_tolerance(0)), "middle history tap");
@@ -603,27 +631,44 @@ TEST_CASE(
   // The shared-memory tile that writes the first packed texels assumes step 1.
   RenderGraph g;
   const auto img = g.add_image("color_in", 8, 8, F::RGBA16F), dn = g.add_image("depth_normal", 8, 8, F::RGBA32F);
-  const auto dz = g.add_image("depth_gradient", 8, 8, F::R32F);
+  const auto dz = g.add_image("depth_gradient", 8, 8, F::R32F), mom = g.add_image("moments", 8, 8, F::RGBA32F);
+  const auto packed = [&](const char* name, std::uint64_t bytes) { return g.add_buffer(name, bytes); };
   CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("out", 8 * 8 * 16), std::nullopt, "", dz}, 1, settings),
+      passes::add_atrous(g, pipelines, {img, dn, packed("out", 8 * 8 * 16), std::nullopt, "", dz, mom}, 1, settings),
       std::invalid_argument);
   // Packed texels carry no depth gradient: without its image, the next iteration would have none.
-  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("no_gradient", 8 * 8 * 16)}, 0, settings),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      passes::add_atrous(
+          g, pipelines, {img, dn, packed("no_gradient", 8 * 8 * 16), std::nullopt, "", std::nullopt, mom}, 0, settings),
+      std::invalid_argument);
+  // The first packed iteration estimates the variance from the moments; no other reads them.
+  CHECK_THROWS_AS(
+      passes::add_atrous(g, pipelines, {img, dn, packed("no_moments", 8 * 8 * 16), std::nullopt, "", dz}, 0, settings),
+      std::invalid_argument);
+  CHECK_THROWS_AS(
+      passes::add_atrous(g, pipelines,
+                         {img, dn, g.add_image("image_out", 8, 8, F::RGBA16F), std::nullopt, "", std::nullopt, mom}, 0,
+                         settings),
+      std::invalid_argument);
   // A buffer or image that does not cover depth_normal would be read or written out of range.
   CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("small", 8 * 8 * 16 - 16), std::nullopt, "", dz}, 0,
+      passes::add_atrous(g, pipelines, {img, dn, packed("small", 8 * 8 * 16 - 16), std::nullopt, "", dz, mom}, 0,
                          settings),
       std::invalid_argument);
   CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_image("wide", 9, 8, F::RGBA16F)}, 0, settings),
                   std::invalid_argument);
   CHECK_THROWS_AS(passes::add_atrous(g, pipelines,
-                                     {img, dn, g.add_buffer("narrow_gradient", 8 * 8 * 16), std::nullopt, "",
-                                      g.add_image("depth_gradient.small", 8, 7, F::R32F)},
+                                     {img, dn, packed("narrow_gradient", 8 * 8 * 16), std::nullopt, "",
+                                      g.add_image("depth_gradient.small", 8, 7, F::R32F), mom},
+                                     0, settings),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines,
+                                     {img, dn, packed("narrow_moments", 8 * 8 * 16), std::nullopt, "", dz,
+                                      g.add_image("moments.small", 7, 8, F::RGBA32F)},
                                      0, settings),
                   std::invalid_argument);
   CHECK_NOTHROW(
-      passes::add_atrous(g, pipelines, {img, dn, g.add_buffer("fits", 8 * 8 * 16), std::nullopt, "", dz}, 0, settings));
+      passes::add_atrous(g, pipelines, {img, dn, packed("fits", 8 * 8 * 16), std::nullopt, "", dz, mom}, 0, settings));
 }
 
 TEST_CASE(

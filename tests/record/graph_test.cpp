@@ -269,12 +269,22 @@ TEST_CASE("culling: an output nobody reads culls its pass, a still frame culls t
   CHECK(text.find("debug_view: nothing that contributes") != std::string::npos);
   CHECK(text.find("gradient_select: nothing in the scene") != std::string::npos);
   CHECK(compiled.dot().find("left out") != std::string::npos);
+  // The variance pass and the last a-trous iteration's plain twin write what only a reader of the
+  // denoiser's outputs wants (the first iteration estimates the variance, the last composites).
+  for (const char* name : {"variance", "atrous.5"}) {
+    CAPTURE(name);
+    REQUIRE(culled.count(name) == 1);
+    CHECK(culled[name].find("nothing that contributes") != std::string::npos);
+  }
+  CHECK(culled.count("atrous.5+composite") == 0);
 
+  // The debug view reads the variance image: its pass runs then.
   s.scene_moved = true;
   s.debug_view = passes::DebugView::Motion;
   auto g2 = builder.build(s, scene.gpu, scene.targets(16, 16));
   auto compiled2 = runtime.compile(g2);
-  CHECK(compiled2.culled.empty());
+  REQUIRE(compiled2.culled.size() == 1);
+  CHECK(compiled2.culled[0].name == "atrous.5");
 }
 
 TEST_CASE("on a small known graph the derived barriers are exactly the expected ones") {

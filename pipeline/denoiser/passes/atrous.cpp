@@ -10,7 +10,9 @@
 #include "shaders/atrous.first_history.hpp"
 #include "shaders/atrous.history.hpp"
 #include "shaders/atrous.last.hpp"
+#include "shaders/atrous.last_composite.hpp"
 #include "shaders/atrous.last_history.hpp"
+#include "shaders/atrous.last_history_composite.hpp"
 #include "shaders/atrous.middle.hpp"
 #include "shaders/atrous.middle_history.hpp"
 #include "shaders/atrous.plain.hpp"
@@ -21,9 +23,11 @@ namespace {
 // The uniform block as the shader tool generated it (every variant has the same block).
 using Uniforms = asvgf::shaders::atrous_plain_uniforms::Params;
 
-// The variant for the chain position: a storage buffer (the packed filter texels) in or out.
-const hal::ShaderInfo& atrous_shader(bool packed_in, bool packed_out, bool history) {
+// The variant for the chain position: a storage buffer (the packed filter texels) in or out, the
+// history tap, composite folded in.
+const hal::ShaderInfo& atrous_shader(bool packed_in, bool packed_out, bool history, bool composite) {
   namespace sh = asvgf::shaders;
+  if (composite) return history ? sh::atrous_last_history_composite : sh::atrous_last_composite;
   if (packed_in) {
     if (packed_out) return history ? sh::atrous_middle_history : sh::atrous_middle;
     return history ? sh::atrous_last_history : sh::atrous_last;
@@ -38,14 +42,27 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
                               int iteration, const DenoiseSettings& s) {
   const auto& decl = graph.resource(r.depth_normal);
   const bool packed_in = graph.resource(r.color_in).kind == hal::ResourceKind::Buffer;
-  const bool packed_out = graph.resource(r.color_out).kind == hal::ResourceKind::Buffer;
+  const bool composite = r.composite.has_value();
+  const bool packed_out = !composite && graph.resource(r.color_out).kind == hal::ResourceKind::Buffer;
+  if (composite && (!packed_in || r.composite->specular))
+    throw std::invalid_argument("add_atrous: only a one-signal chain's last packed-in iteration composites");
   if (packed_out && !packed_in && iteration != 0)
     throw std::invalid_argument("add_atrous: packed filter texels from an RGBA16F input only at iteration 0 (step 1)");
   if ((packed_in || packed_out) && !r.depth_gradient)
     throw std::invalid_argument("add_atrous: a packed iteration needs the depth_gradient image");
+  const bool first_packed = packed_out && !packed_in;
+  if (first_packed != r.moments.has_value())
+    throw std::invalid_argument(first_packed
+                                    ? "add_atrous: the first packed iteration estimates the variance: it needs moments"
+                                    : "add_atrous: only the first packed iteration reads moments");
   // Every image and buffer must cover depth_normal's size, over which the pass dispatches.
-  std::vector<graph::ResourceId> covering{r.color_in, r.color_out};
+  std::vector<graph::ResourceId> covering{r.color_in};
+  if (composite)
+    covering.insert(covering.end(), {r.composite->albedo, r.composite->hdr, r.composite->display});
+  else
+    covering.push_back(r.color_out);
   if (r.depth_gradient) covering.push_back(*r.depth_gradient);
+  if (r.moments) covering.push_back(*r.moments);
   for (const graph::ResourceId id : covering) {
     const auto& other = graph.resource(id);
     const bool covers = other.kind == hal::ResourceKind::Buffer
@@ -55,19 +72,28 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
       throw std::invalid_argument("add_atrous: '" + other.name + "' does not match depth_normal's " +
                                   std::to_string(decl.width) + "x" + std::to_string(decl.height));
   }
-  const Uniforms u{decl.width, decl.height, 1 << iteration, static_cast<std::uint32_t>(s.kernel),
-                   s.sigma_z,  s.sigma_n,   s.sigma_l};
-  std::vector<Binding> bindings{{"color_in", r.color_in}, {"color_out", r.color_out}};
+  const Uniforms u{
+      decl.width, decl.height,   1 << iteration, static_cast<std::uint32_t>(s.kernel), s.sigma_z, s.sigma_n,
+      s.sigma_l,  s.min_history, s.exposure,     static_cast<std::uint32_t>(s.tonemap)};
+  std::vector<Binding> bindings{{first_packed ? "integrated" : "color_in", r.color_in}};
+  if (composite)
+    bindings.insert(bindings.end(), {{"albedo", r.composite->albedo},
+                                     {"hdr", r.composite->hdr},
+                                     {"display", r.composite->display},
+                                     {"counters", r.composite->counters}});
+  else
+    bindings.push_back({"color_out", r.color_out});
+  if (first_packed) bindings.push_back({"moments", *r.moments});
   if (packed_in)
     bindings.push_back({"depth_gradient", *r.depth_gradient});
   else
     bindings.push_back({"depth_normal", r.depth_normal});
-  if (packed_out && !packed_in) bindings.push_back({"depth_gradient_out", *r.depth_gradient});
+  if (first_packed) bindings.push_back({"depth_gradient_out", *r.depth_gradient});
   if (r.color_history) bindings.push_back({"color_history", *r.color_history});
-  const hal::ShaderInfo& shader = atrous_shader(packed_in, packed_out, r.color_history.has_value());
+  const hal::ShaderInfo& shader = atrous_shader(packed_in, packed_out, r.color_history.has_value(), composite);
   const auto pipeline = pipelines.get<Uniforms>(shader);
-  return add_compute_pass(graph, r.prefix + "atrous." + std::to_string(iteration + 1), shader, pipeline,
-                          std::move(bindings), to_bytes(u), {u.width, u.height, 1});
+  const std::string name = r.prefix + "atrous." + std::to_string(iteration + 1) + (composite ? "+composite" : "");
+  return add_compute_pass(graph, name, shader, pipeline, std::move(bindings), to_bytes(u), {u.width, u.height, 1});
 }
 
 }  // namespace asvgf::passes

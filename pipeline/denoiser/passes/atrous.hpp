@@ -8,6 +8,7 @@
 #include "asvgf/compute_pass.hpp"
 #include "asvgf/denoise_settings.hpp"
 #include "asvgf/render_graph.hpp"
+#include "denoiser/passes/composite.hpp"
 
 namespace asvgf::passes {
 
@@ -15,20 +16,29 @@ struct AtrousResources {
   // color_in and color_out: RGBA16F images (rgb, variance) or storage buffers of packed filter
   // texels (16 bytes a pixel, in rows; shaders/common/filter_texel.glsl), which carry the surface too
   // and which the iterations between a chain's first and last pass on. A buffer out from an image in
-  // is the first iteration only (it reads a shared-memory tile that needs step 1).
+  // is the first iteration only (it reads a shared-memory tile that needs step 1), and it estimates
+  // the variance itself: its color_in is the temporal pass's output (rgb, temporal variance) and it
+  // also reads `moments` (the variance pass's inputs).
   graph::ResourceId color_in = 0;                  // read
   graph::ResourceId depth_normal = 0;              // read (not by packed-in iterations): RGBA32F
-  graph::ResourceId color_out = 0;                 // written
+  graph::ResourceId color_out = 0;                 // written (not with `composite`)
   std::optional<graph::ResourceId> color_history;  // also written (persistent RGBA16F) at the history tap
   std::string prefix;                              // of the pass name: "specular." for the second signal
   // R32F, depth_normal's depth gradient, which the packed texel has no room for: written by the
   // first packed iteration, read by every packed-in one instead of depth_normal.
   std::optional<graph::ResourceId> depth_gradient;
+  std::optional<graph::ResourceId> moments;  // read by the first packed iteration: RGBA32F (E[l], E[l^2], n)
+  // A one-signal chain's last packed-in iteration may do the composite pass's work itself
+  // (specular must be absent): it writes hdr and display instead of color_out, and its pass is
+  // named "<prefix>atrous.<iteration + 1>+composite".
+  std::optional<CompositeResources> composite;
 };
 // Adds "<prefix>atrous.<iteration + 1>" with step 2^iteration and the settings' kernel and sigmas.
 // The dispatch covers depth_normal's size. Throws std::invalid_argument for a buffer out from an
 // image in at an iteration other than 0, for colour images of another size or buffers smaller
-// than 16 bytes a pixel, and for a packed iteration without depth_gradient.
+// than 16 bytes a pixel, for a packed iteration without depth_gradient and for the first packed
+// iteration without moments (or moments given to another), and for `composite` on another
+// iteration or with a specular signal.
 graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
                               int iteration, const DenoiseSettings& settings);
 
