@@ -24,7 +24,21 @@
 #include "common/denoise.glsl"
 #include "common/filter_texel.glsl"
 
+#ifdef PACKED_OUT
+#ifndef PACKED_IN
+#define FIRST_PACKED
+#endif
+#endif
+
+#ifdef FIRST_PACKED
+// 16x8 (the most invocations OpenGL ES guarantees): the tile's apron, where each texel costs a
+// variance estimate, is 0.875 texels a pixel against 1.25 with 8x8.
+const int kGroupX = 16;
+const int kGroupY = 8;
+layout(local_size_x = 16, local_size_y = 8) in;
+#else
 layout(local_size_x = 8, local_size_y = 8) in;
+#endif
 
 layout(set = 0, binding = 0) uniform Params {
   uint width;
@@ -38,11 +52,6 @@ layout(set = 0, binding = 0) uniform Params {
   float exposure;     // COMPOSITE: multiplier applied before the tone curve
   uint tonemap;       // COMPOSITE: 0 clamp, 1 ACES (Narkowicz)
 } params;
-#ifdef PACKED_OUT
-#ifndef PACKED_IN
-#define FIRST_PACKED
-#endif
-#endif
 #ifdef PACKED_IN
 layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec4 texels[]; } color_in;
 #elif defined(FIRST_PACKED)
@@ -90,23 +99,23 @@ struct Tap {
   vec3 n;
 };
 #ifdef FIRST_PACKED
-// Step 1 only: the workgroup's 8x8 pixels and their taps lie in one 12x12 block, fetched once into
-// shared memory (colour and variance estimated, decoded normal): 5.5 fetches a pixel instead of 58, and 2.25
-// octahedral decodes instead of 24 (docs/performance.md). Entries outside the image hold
-// the nearest pixel's values, which is what the variance prefilter's clamped reads want; taps skip
-// them.
+// Step 1 only: the workgroup's 16x8 pixels and their taps lie in one 20x12 block, estimated and
+// fetched once into shared memory (colour and variance, decoded normal): 1.9 estimates and normal
+// decodes a pixel instead of 25 (docs/performance.md). Entries outside the image hold the nearest
+// pixel's values, which is what the variance prefilter's clamped reads want; taps skip them.
 const int kApron = 2;
-const int kTile = 8 + 2 * kApron;
-shared vec4 tile_color[kTile * kTile];  // the variance estimate's colour and variance, unrounded
-shared vec4 tile_surface[kTile * kTile];  // depth, normal
-ivec2 tile_origin() { return ivec2(gl_WorkGroupID.xy) * 8 - kApron; }
+const int kTileX = kGroupX + 2 * kApron;
+const int kTileY = kGroupY + 2 * kApron;
+shared vec4 tile_color[kTileX * kTileY];  // the variance estimate's colour and variance, unrounded
+shared vec4 tile_surface[kTileX * kTileY];  // depth, normal
+ivec2 tile_origin() { return ivec2(gl_WorkGroupID.xy) * ivec2(kGroupX, kGroupY) - kApron; }
 int tile_index(ivec2 q) {
   const ivec2 t = q - tile_origin();
-  return t.y * kTile + t.x;
+  return t.y * kTileX + t.x;
 }
 void load_tile() {
-  for (int k = int(gl_LocalInvocationIndex); k < kTile * kTile; k += 64) {
-    const ivec2 q = clamp_pixel(tile_origin() + ivec2(k % kTile, k / kTile));
+  for (int k = int(gl_LocalInvocationIndex); k < kTileX * kTileY; k += kGroupX * kGroupY) {
+    const ivec2 q = clamp_pixel(tile_origin() + ivec2(k % kTileX, k / kTileX));
     const Surface s = surface_from(texelFetch(depth_normal, q, 0));
     tile_color[k] = estimate_color_variance(q, s);
     tile_surface[k] = vec4(s.z, s.n);
