@@ -24,10 +24,8 @@
 #include "common/denoise.glsl"
 #include "common/filter_texel.glsl"
 
-#ifdef PACKED_OUT
-#ifndef PACKED_IN
+#if defined(PACKED_OUT) && !defined(PACKED_IN)
 #define FIRST_PACKED
-#endif
 #endif
 
 #ifdef FIRST_PACKED

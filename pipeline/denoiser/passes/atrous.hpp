@@ -30,7 +30,8 @@ struct AtrousResources {
   std::optional<graph::ResourceId> moments;  // read by the first packed iteration: RGBA32F (E[l], E[l^2], n)
   // A one-signal chain's last packed-in iteration may do the composite pass's work itself
   // (specular must be absent): it writes hdr and display instead of color_out, and its pass is
-  // named "<prefix>atrous.<iteration + 1>+composite".
+  // named "<prefix>atrous.<iteration + 1>+composite". The illumination it composites is its own
+  // result, so `composite->illumination` is not read.
   std::optional<CompositeResources> composite;
 };
 // Adds "<prefix>atrous.<iteration + 1>" with step 2^iteration and the settings' kernel and sigmas.
