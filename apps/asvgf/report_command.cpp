@@ -223,6 +223,21 @@ std::vector<std::vector<std::uint8_t>> material_masks(hal::Device& device, const
   return masks;
 }
 
+// Per frame, each pixel's class (report/pixel_classes.hpp) from the G-buffer the denoiser sees.
+std::vector<std::vector<report::PixelClass>> pixel_class_maps(hal::Device& device, const scene::Scene& scene,
+                                                              render::RenderSettings s, int frames) {
+  s.method = frame::Method::Raw;
+  s.spp = 1;
+  s.aovs = true;
+  render::Renderer renderer(device, scene, s);
+  std::vector<std::vector<report::PixelClass>> maps;
+  for (int f = 0; f < frames; ++f) {
+    const auto a = renderer.render(f);
+    maps.push_back(report::classify_pixels(a.aovs->albedo, a.aovs->depth, a.aovs->normal, a.width, a.height));
+  }
+  return maps;
+}
+
 // One scene's report, written to `dir` (report.md, report.csv, plots).
 report::SceneReport report_scene(const ReportOptions& o, std::vector<report::RunSpec> specs, hal::Device& device,
                                  const std::filesystem::path& dir) {
@@ -317,6 +332,9 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
     d.glossy_fraction = fraction(glossy);
   }
 
+  progress.step(done, "classing the pixels");
+  const auto classes = pixel_class_maps(device, scene, base, frames);
+
   std::vector<std::vector<float>> reference(std::size_t(d.reference_renders));
   std::vector<std::vector<std::uint8_t>> reference_display(reference.size());  // scenes with glossy materials
   std::vector<double> reference_mean(reference.size());
@@ -391,6 +409,7 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
         fr.relmse_glossy = render::relative_mse(img.hdr, ref, glossy[std::size_t(f)], true);
         fr.relmse_matte = render::relative_mse(img.hdr, ref, glossy[std::size_t(f)], false);
       }
+      fr.classes = report::relmse_by_class(img.hdr, ref, classes[std::size_t(f)]);
       fr.reference_mean = reference_mean[gi];
       if (!d.timed_separately) {
         FrameTime t = frame_time(renderer);

@@ -244,6 +244,32 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
           << "), the frames around the change:\n\n![glossy crops](crops_glossy.png)\n\n";
   }
 
+  out << "### Where the error is: edges, coloured and grey surfaces\n\n"
+         "Each pixel of each frame is classed from the G-buffer: an edge (within two pixels of another "
+         "surface or albedo), a coloured surface (albedo channels more than 0.05 apart, which demodulation "
+         "divides unevenly), a grey one, or background. Each class's part of the mean relMSE (the parts sum "
+         "to it), and in brackets that part divided by the class's share of the pixels:\n\n";
+  if (!d.runs.empty()) {
+    constexpr PixelClass kShown[] = {PixelClass::Edge, PixelClass::Coloured, PixelClass::Grey, PixelClass::Background};
+    const RunResult& first = d.runs.front();
+    out << "| run | mean relMSE";
+    for (const PixelClass c : kShown)
+      out << " | " << to_string(c) << " (" << g(100.0 * first.class_fraction[std::size_t(c)]) << "% of the pixels)";
+    out << " |\n| ---";
+    for (int k = 0; k <= kPixelClasses; ++k) out << " | ---";
+    out << " |\n";
+    for (const auto& r : d.runs) {
+      out << "| `" << r.spec.name << "` | " << g(r.mean_relmse);
+      for (const PixelClass c : kShown) {
+        const auto k = std::size_t(c);
+        out << " | " << g(r.class_contribution[k]);
+        if (r.class_fraction[k] > 0) out << " (" << g(r.class_contribution[k] / r.class_fraction[k]) << ")";
+      }
+      out << " |\n";
+    }
+    out << "\n";
+  }
+
   out << "## Per-frame error\n\n![relMSE per frame](relmse_per_frame.png)\n\n"
       << "![temporal error per frame](temporal_per_frame.png)\n\n![SSIM per frame](ssim_per_frame.png)\n\n";
 

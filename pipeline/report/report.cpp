@@ -65,6 +65,14 @@ void summarise(RunResult& run, std::optional<ChangeWindow> change) {
   run.mean_relmse_matte = mean(matte);
   run.glossy_after_change = mean(glossy_after);
   run.matte_after_change = mean(matte_after);
+  for (int k = 0; k < kPixelClasses; ++k) {
+    std::vector<double> fraction, contribution;
+    for (const auto& f : run.frames)
+      fraction.push_back(f.classes.fraction[std::size_t(k)]),
+          contribution.push_back(f.classes.contribution(PixelClass(k)));
+    run.class_fraction[std::size_t(k)] = mean(fraction);
+    run.class_contribution[std::size_t(k)] = mean(contribution);
+  }
   run.gpu_ms = median(gpu);
   run.pass_ms.clear();
   for (const auto& p : order) run.pass_ms.emplace_back(p, median(passes[p]));
@@ -179,6 +187,8 @@ std::string report_csv(const ReportData& data) {
   const std::vector<std::string> passes = pass_columns(data);
   std::ostringstream csv;
   csv << "run,method,spp,alpha,adaptive,atrous_iterations,kernel,frame,relmse,ssim,temporal,mean,reference_mean,gpu_ms";
+  constexpr PixelClass kShown[] = {PixelClass::Edge, PixelClass::Coloured, PixelClass::Grey};
+  for (const PixelClass c : kShown) csv << "," << to_string(c) << "_fraction,relmse_" << to_string(c);
   for (const auto& p : passes) csv << "," << p << "_ms";
   csv << "\n";
   for (const auto& r : data.runs) {
@@ -193,6 +203,8 @@ std::string report_csv(const ReportData& data) {
           << (filtered ? (s.denoise.kernel == asvgf::AtrousKernel::Box ? "box" : "b3spline") : "") << "," << f.frame
           << "," << num(f.relmse) << "," << num(f.ssim) << "," << num(f.temporal) << "," << num(f.mean) << ","
           << num(f.reference_mean) << "," << (f.gpu_ms ? num(*f.gpu_ms) : "");
+      for (const PixelClass c : kShown)
+        csv << "," << num(f.classes.fraction[std::size_t(c)]) << "," << num(f.classes.relmse[std::size_t(c)]);
       for (const auto& p : passes) {
         const auto it = std::find_if(f.pass_ms.begin(), f.pass_ms.end(), [&](const auto& e) { return e.first == p; });
         csv << "," << (it != f.pass_ms.end() ? num(it->second) : "");

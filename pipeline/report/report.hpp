@@ -3,6 +3,7 @@
 // report.md and the PNG plots.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -12,6 +13,7 @@
 
 #include "asvgf/denoise_settings.hpp"
 #include "renderer/frame_graph.hpp"
+#include "report/pixel_classes.hpp"
 #include "report/plot.hpp"
 #include "report/sequence_metrics.hpp"
 
@@ -43,6 +45,7 @@ struct FrameResult {
   double relmse_textured = NAN, relmse_untextured = NAN;
   // The same over the pixels whose surface is glossy (a GGX lobe) and the matte ones.
   double relmse_glossy = NAN, relmse_matte = NAN;
+  ClassErrors classes;  // relMSE by pixel class (edges, coloured and grey surfaces, background)
   std::vector<std::pair<std::string, double>> pass_ms;  // in execution order
 };
 
@@ -60,6 +63,9 @@ struct RunResult {
   // Glossy and matte pixels from the change on: reflections that lag behind a moving object or
   // light (ghosting) raise the first.
   double glossy_after_change = NAN, matte_after_change = NAN;
+  // Per pixel class, over the frames: the share of the pixels, and the class's part of mean_relmse
+  // (they sum to it).
+  std::array<double, kPixelClasses> class_fraction{}, class_contribution{};
   std::vector<std::pair<std::string, double>> pass_ms;  // median per pass, in pass order
   Lag lag;
   EnergyBias energy;

@@ -124,12 +124,25 @@ def check(directory, expected):
                     fail("%s frame %s: %s is %r, not a finite number" % (name, row["frame"], col, row[col]))
             if row["gpu_ms"] != "" and not finite(row["gpu_ms"]):
                 fail("%s frame %s: gpu_ms is %r" % (name, row["frame"], row["gpu_ms"]))
+            # The pixel classes partition the frame: edges, coloured and grey surfaces hold at most
+            # its relMSE (background holds the rest), and a class with pixels has a number.
+            parts, shares = 0.0, 0.0
+            for cls in ["edges", "coloured", "grey"]:
+                share = float(row[cls + "_fraction"])
+                if share > 0 and not finite(row["relmse_" + cls]):
+                    fail("%s frame %s: relmse_%s is %r" % (name, row["frame"], cls, row["relmse_" + cls]))
+                parts += share * float(row["relmse_" + cls]) if share > 0 else 0.0
+                shares += share
+            if shares > 1 + 1e-6 or parts > float(row["relmse"]) * (1 + 1e-6) + 1e-12:
+                fail("%s frame %s: the pixel classes hold %g of relMSE %s over %g of the pixels"
+                     % (name, row["frame"], parts, row["relmse"], shares))
     md_path = os.path.join(directory, "report.md")
     if not os.path.isfile(md_path):
         fail("report.md is missing")
     md = open(md_path, encoding="utf-8").read()
     for needle in ["of plain accumulation", "### 1 spp, EMA 0.2, EMA 0.05 (ghosting), SVGF, A-SVGF and the reference",
-                   "### 9 against 15 à-trous iterations", "### Constant against adaptive α", "## Definitions"]:
+                   "### 9 against 15 à-trous iterations", "### Constant against adaptive α",
+                   "### Where the error is: edges, coloured and grey surfaces", "## Definitions"]:
         if needle not in md:
             fail("report.md lacks %r" % needle)
     pngs = sorted(f for f in os.listdir(directory) if f.endswith(".png"))
