@@ -11,10 +11,7 @@ double relative_mse(std::span<const float> x, std::span<const float> r) {
   if (x.size() != r.size() || x.size() % 4 != 0) throw std::invalid_argument("relative_mse: image sizes differ");
   double sum = 0.0;
   for (std::size_t i = 0; i < x.size(); i += 4)
-    for (int c = 0; c < 3; ++c) {
-      const double d = double(x[i + c]) - double(r[i + c]);
-      sum += d * d / (double(r[i + c]) * double(r[i + c]) + 0.01);
-    }
+    for (int c = 0; c < 3; ++c) sum += relative_squared_error(x[i + c], r[i + c]);
   return sum / double(x.size() / 4 * 3);
 }
 
@@ -26,10 +23,7 @@ double relative_mse(std::span<const float> x, std::span<const float> r, std::spa
   for (std::size_t p = 0; p < mask.size(); ++p) {
     if ((mask[p] != 0) != selected) continue;
     ++n;
-    for (int c = 0; c < 3; ++c) {
-      const double d = double(x[4 * p + c]) - double(r[4 * p + c]);
-      sum += d * d / (double(r[4 * p + c]) * double(r[4 * p + c]) + 0.01);
-    }
+    for (int c = 0; c < 3; ++c) sum += relative_squared_error(x[4 * p + c], r[4 * p + c]);
   }
   return n == 0 ? std::numeric_limits<double>::quiet_NaN() : sum / double(n * 3);
 }

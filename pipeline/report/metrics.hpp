@@ -7,7 +7,12 @@
 
 namespace asvgf::render {
 
-// mean over pixels and RGB channels of (x - r)^2 / (r^2 + 0.01); images are RGBA floats.
+// One value's term of relMSE: (x - r)^2 / (r^2 + 0.01).
+inline double relative_squared_error(double x, double r) {
+  return (x - r) * (x - r) / (r * r + 0.01);
+}
+
+// mean over pixels and RGB channels of relative_squared_error; images are RGBA floats.
 double relative_mse(std::span<const float> image, std::span<const float> reference);
 // The same over the pixels p with (mask[p] != 0) == selected; NaN when there are none.
 double relative_mse(std::span<const float> image, std::span<const float> reference, std::span<const std::uint8_t> mask,

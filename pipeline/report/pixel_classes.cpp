@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "report/metrics.hpp"
+
 namespace asvgf::report {
 
 std::string_view to_string(PixelClass c) {
@@ -79,10 +81,7 @@ ClassErrors relmse_by_class(std::span<const float> x, std::span<const float> r, 
   for (std::size_t p = 0; p < classes.size(); ++p) {
     const auto k = std::size_t(classes[p]);
     count[k] += 1;
-    for (int c = 0; c < 3; ++c) {
-      const double d = double(x[4 * p + c]) - double(r[4 * p + c]);
-      sum[k] += d * d / (double(r[4 * p + c]) * double(r[4 * p + c]) + 0.01);  // as relative_mse
-    }
+    for (int c = 0; c < 3; ++c) sum[k] += render::relative_squared_error(x[4 * p + c], r[4 * p + c]);
   }
   ClassErrors e;
   for (int k = 0; k < kPixelClasses; ++k) {
