@@ -200,40 +200,38 @@ std::string command_line(const ReportOptions& o, int frames) {
   return s;
 }
 
-// Per frame, which pixels see a material that `plain` changed: the G-buffer's albedo (what the
-// denoiser divides by) of `scene` and of `plain`, the same scene with some material property
-// dropped, differs exactly there. Dropping textures marks textured surfaces (a texel of exactly 1
-// would read as untextured; the built-in textures stay below); dropping the GGX lobe marks glossy
-// ones (their albedo is the lobes' directional albedo, not the base colour).
-std::vector<std::vector<std::uint8_t>> material_masks(hal::Device& device, const scene::Scene& scene,
-                                                      const scene::Scene& plain, render::RenderSettings s, int frames) {
+// Per frame, what each pixel sees, from the G-buffer the denoiser sees (rendered once a frame):
+// its class (report/pixel_classes.hpp) and, against the same scene with some material property
+// dropped, whether that property shows there (its albedo, what the denoiser divides by, differs
+// exactly there). Dropping textures marks textured surfaces (a texel of exactly 1 would read as
+// untextured; the built-in textures stay below); dropping the GGX lobe marks glossy ones (their
+// albedo is the lobes' directional albedo, not the base colour).
+struct PixelMaps {
+  std::vector<std::vector<report::PixelClass>> classes;
+  std::vector<std::vector<std::uint8_t>> textured, glossy;  // empty without `untextured`, `matte`
+};
+PixelMaps pixel_maps(hal::Device& device, const scene::Scene& scene, const std::optional<scene::Scene>& untextured,
+                     const std::optional<scene::Scene>& matte, render::RenderSettings s, int frames) {
   s.method = frame::Method::Raw;
   s.spp = 1;
   s.aovs = true;
-  render::Renderer with(device, scene, s), without(device, plain, s);
-  std::vector<std::vector<std::uint8_t>> masks;
-  for (int f = 0; f < frames; ++f) {
-    const auto a = with.render(f), b = without.render(f);
-    std::vector<std::uint8_t> mask(std::size_t(a.width) * a.height, 0);
-    for (std::size_t p = 0; p < mask.size(); ++p)
+  render::Renderer with(device, scene, s);
+  std::optional<render::Renderer> without_textures, without_gloss;
+  if (untextured) without_textures.emplace(device, *untextured, s);
+  if (matte) without_gloss.emplace(device, *matte, s);
+  auto mask = [](const render::FrameImages& a, const render::FrameImages& b) {
+    std::vector<std::uint8_t> m(std::size_t(a.width) * a.height, 0);
+    for (std::size_t p = 0; p < m.size(); ++p)
       for (int c = 0; c < 3; ++c)
-        if (std::abs(a.aovs->albedo[4 * p + c] - b.aovs->albedo[4 * p + c]) > 1e-4f) mask[p] = 1;
-    masks.push_back(std::move(mask));
-  }
-  return masks;
-}
-
-// Per frame, each pixel's class (report/pixel_classes.hpp) from the G-buffer the denoiser sees.
-std::vector<std::vector<report::PixelClass>> pixel_class_maps(hal::Device& device, const scene::Scene& scene,
-                                                              render::RenderSettings s, int frames) {
-  s.method = frame::Method::Raw;
-  s.spp = 1;
-  s.aovs = true;
-  render::Renderer renderer(device, scene, s);
-  std::vector<std::vector<report::PixelClass>> maps;
+        if (std::abs(a.aovs->albedo[4 * p + c] - b.aovs->albedo[4 * p + c]) > 1e-4f) m[p] = 1;
+    return m;
+  };
+  PixelMaps maps;
   for (int f = 0; f < frames; ++f) {
-    const auto a = renderer.render(f);
-    maps.push_back(report::classify_pixels(a.aovs->albedo, a.aovs->depth, a.aovs->normal, a.width, a.height));
+    const auto a = with.render(f);
+    maps.classes.push_back(report::classify_pixels(a.aovs->albedo, a.aovs->depth, a.aovs->normal, a.width, a.height));
+    if (without_textures) maps.textured.push_back(mask(a, without_textures->render(f)));
+    if (without_gloss) maps.glossy.push_back(mask(a, without_gloss->render(f)));
   }
   return maps;
 }
@@ -316,24 +314,22 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
     return double(count) / (double(d.width) * d.height * frames);
   };
   const auto& materials = scene.materials;
-  std::vector<std::vector<std::uint8_t>> textured, glossy;
+  std::optional<scene::Scene> untextured, matte;
   if (std::any_of(materials.begin(), materials.end(), [](const auto& m) { return m.albedo_texture >= 0; })) {
-    progress.step(done, "finding the textured pixels");
-    scene::Scene plain = scene;
-    for (auto& m : plain.materials) m.albedo_texture = -1;
-    textured = material_masks(device, scene, plain, base, frames);
-    d.textured_fraction = fraction(textured);
+    untextured = scene;
+    for (auto& m : untextured->materials) m.albedo_texture = -1;
   }
   if (std::any_of(materials.begin(), materials.end(), [](const auto& m) { return m.glossy(); })) {
-    progress.step(done, "finding the glossy pixels");
-    scene::Scene matte = scene;
-    for (auto& m : matte.materials) m.metallic = m.specular = 0.0f;
-    glossy = material_masks(device, scene, matte, base, frames);
-    d.glossy_fraction = fraction(glossy);
+    matte = scene;
+    for (auto& m : matte->materials) m.metallic = m.specular = 0.0f;
   }
-
   progress.step(done, "classing the pixels");
-  const auto classes = pixel_class_maps(device, scene, base, frames);
+  const PixelMaps maps = pixel_maps(device, scene, untextured, matte, base, frames);
+  const auto& textured = maps.textured;
+  const auto& glossy = maps.glossy;
+  const auto& classes = maps.classes;
+  if (!textured.empty()) d.textured_fraction = fraction(textured);
+  if (!glossy.empty()) d.glossy_fraction = fraction(glossy);
 
   std::vector<std::vector<float>> reference(std::size_t(d.reference_renders));
   std::vector<std::vector<std::uint8_t>> reference_display(reference.size());  // scenes with glossy materials
