@@ -24,10 +24,10 @@ const float kLumEps = 1e-10;
 
 // w_z = exp(-|z_p - z_q| / (sigma_z |<grad z(p), p - q>|)); with the scalar gradient g the inner
 // product is bounded by g (|dx| + |dy|) (exact on a plane), hence `dist_l1`.
+// One return in each function a tap loop calls: see atrous_tap_weight.
 float weight_depth(Surface p, Surface q, float dist_l1, float sigma_z) {
-  if (!hit(q)) return 0.0;
   float tolerance = max(sigma_z * p.dz * dist_l1, kDepthEpsRel * p.z);
-  return exp(-abs(p.z - q.z) / tolerance);
+  return hit(q) ? exp(-abs(p.z - q.z) / tolerance) : 0.0;
 }
 
 // w_n = max(0, <n_p, n_q>)^sigma_n
@@ -54,13 +54,15 @@ AtrousScales atrous_scales(Surface p, int step, float sigma_z, float sigma_l, fl
   return AtrousScales(kLog2e / tolerance, kLog2e / (sigma_l * std_dev + kLumEps));
 }
 // w_z w_n w_l of a tap at L1 distance l1 (in steps, 1..4) with depth zq (0: no hit, weight 0).
+// One return: an early one becomes a one-trip loop when inlined, which NVIDIA's OpenGL SPIR-V front
+// end compiles as a loop (docs/performance.md).
 float atrous_tap_weight(Surface p, float lp, float zq, vec3 nq, float lq, int l1, float sigma_n, AtrousScales s) {
-  if (!(zq > 0.0)) return 0.0;
   const float cos_pq = dot(p.n, nq);
-  if (sigma_n != 0.0 && !(cos_pq > 0.0)) return 0.0;  // pow(0, sigma_n) = 0; pow(c, 0) = 1
+  // No hit, or a normal facing away: pow(0, sigma_n) = 0 (pow(c, 0) = 1).
+  const bool zero = !(zq > 0.0) || (sigma_n != 0.0 && !(cos_pq > 0.0));
   // cos >= 1 (equal normals, to rounding) gives 0 even for an infinite sigma_n (pow(1, inf) = 1).
   const float log2_wn = sigma_n == 0.0 || cos_pq >= 1.0 ? 0.0 : sigma_n * log2(cos_pq);
-  return exp2(log2_wn - abs(p.z - zq) * s.depth[l1 - 1] - abs(lp - lq) * s.luminance);
+  return zero ? 0.0 : exp2(log2_wn - abs(p.z - zq) * s.depth[l1 - 1] - abs(lp - lq) * s.luminance);
 }
 
 // 1D kernel taps: B3 spline (1/16, 1/4, 3/8, 1/4, 1/16) for |i| <= 2; box of 3 for |i| <= 1.
@@ -73,9 +75,8 @@ const float kReprojDepthRel = 0.02;
 const float kReprojDepthGrad = 4.0;
 const float kReprojNormalCos = 0.9;
 bool reprojection_consistent(Surface cur, Surface prev) {
-  if (!hit(prev)) return false;
-  if (abs(cur.z - prev.z) > kReprojDepthRel * cur.z + kReprojDepthGrad * cur.dz) return false;
-  return dot(cur.n, prev.n) >= kReprojNormalCos;
+  return hit(prev) && !(abs(cur.z - prev.z) > kReprojDepthRel * cur.z + kReprojDepthGrad * cur.dz) &&
+         dot(cur.n, prev.n) >= kReprojNormalCos;
 }
 
 #endif

@@ -20,6 +20,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
+#extension GL_EXT_control_flow_attributes : require
 #include "common/compute.glsl"
 #include "common/denoise.glsl"
 #include "common/filter_texel.glsl"
@@ -144,8 +145,8 @@ float variance_at(ivec2 q) { return texelFetch(color_in, q, 0).a; }
 
 float prefiltered_variance(ivec2 p) {
   float v = 0.0;
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) v += binomial3(dx) * binomial3(dy) * variance_at(clamp_pixel(p + ivec2(dx, dy)));
+  [[unroll]] for (int dy = -1; dy <= 1; ++dy)
+    [[unroll]] for (int dx = -1; dx <= 1; ++dx) v += binomial3(dx) * binomial3(dy) * variance_at(clamp_pixel(p + ivec2(dx, dy)));
   return v;
 }
 
@@ -168,19 +169,21 @@ void filter_pixel(ivec2 p) {
     vec3 sum_c = vec3(0.0);
     float sum_v = 0.0, sum_w = 0.0;
     // Constant bounds (the radius test inside), so that the compiler can unroll and index `scales`.
-    for (int dy = -2; dy <= 2; ++dy) {
-      for (int dx = -2; dx <= 2; ++dx) {
-        if (max(abs(dx), abs(dy)) > radius) continue;
+    [[unroll]] for (int dy = -2; dy <= 2; ++dy) {
+      [[unroll]] for (int dx = -2; dx <= 2; ++dx) {
         ivec2 q = p + params.step * ivec2(dx, dy);
-        if (q.x < 0 || q.y < 0 || !inside(q, params.width, params.height)) continue;
-        float h = params.kernel == 0u ? b3spline(dx) * b3spline(dy) : 1.0;
-        const Tap t = (dx == 0 && dy == 0) ? c : read_tap(q);
-        float w = h;
-        if (dx != 0 || dy != 0)
-          w *= atrous_tap_weight(center, lp, t.z, t.n, luminance(t.color.rgb), abs(dx) + abs(dy), params.sigma_n, scales);
-        sum_c += w * t.color.rgb;
-        sum_v += w * w * t.color.a;
-        sum_w += w;
+        // Unrolled, no `continue`: spirv-opt unrolls only loops without one, and NVIDIA's OpenGL
+        // SPIR-V front end keeps a loop as a conditional loop (docs/performance.md).
+        if (max(abs(dx), abs(dy)) <= radius && q.x >= 0 && q.y >= 0 && inside(q, params.width, params.height)) {
+          float h = params.kernel == 0u ? b3spline(dx) * b3spline(dy) : 1.0;
+          const Tap t = (dx == 0 && dy == 0) ? c : read_tap(q);
+          float w = h;
+          if (dx != 0 || dy != 0)
+            w *= atrous_tap_weight(center, lp, t.z, t.n, luminance(t.color.rgb), abs(dx) + abs(dy), params.sigma_n, scales);
+          sum_c += w * t.color.rgb;
+          sum_v += w * w * t.color.a;
+          sum_w += w;
+        }
       }
     }
     result = vec4(sum_c / sum_w, sum_v / (sum_w * sum_w));

@@ -9,6 +9,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
+#extension GL_EXT_control_flow_attributes : require
 #include "common/compute.glsl"
 #include "common/denoise.glsl"
 
@@ -56,22 +57,24 @@ void main() {
   Surface center = surface_from(center_texel);
   vec2 sum = vec2(0.0);
   float weights = 0.0;
-  for (int dy = -1; dy <= 1; ++dy) {
-    for (int dx = -1; dx <= 1; ++dx) {
+  // Unrolled, no `continue` (spirv-opt unrolls only loops without one): see atrous.comp.
+  [[unroll]] for (int dy = -1; dy <= 1; ++dy) {
+    [[unroll]] for (int dx = -1; dx <= 1; ++dx) {
       ivec2 q = s + params.step * ivec2(dx, dy);
-      if (!inside(q, params.gradient_width, params.gradient_height) || any(lessThan(q, ivec2(0)))) continue;
-      vec2 g = texelFetch(gradient_in, q, 0).xy;
-      float w = binomial3(dx) * binomial3(dy);
-      if (dx != 0 || dy != 0) {
-        ivec2 gq = guide_pixel(q);
-        if (hit(center)) {
-          Surface other = surface_from(guide_texel(q));
-          float dist = float(abs(gq.x - gp.x) + abs(gq.y - gp.y));
-          w *= weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n);
+      if (inside(q, params.gradient_width, params.gradient_height) && all(greaterThanEqual(q, ivec2(0)))) {
+        vec2 g = texelFetch(gradient_in, q, 0).xy;
+        float w = binomial3(dx) * binomial3(dy);
+        if (dx != 0 || dy != 0) {
+          ivec2 gq = guide_pixel(q);
+          if (hit(center)) {
+            Surface other = surface_from(guide_texel(q));
+            float dist = float(abs(gq.x - gp.x) + abs(gq.y - gp.y));
+            w *= weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n);
+          }
         }
+        sum += w * g;
+        weights += w;
       }
-      sum += w * g;
-      weights += w;
     }
   }
   imageStore(gradient_out, s, vec4(sum / weights, 0.0, 0.0));

@@ -12,6 +12,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
+#extension GL_EXT_control_flow_attributes : require
 #include "common/compute.glsl"
 #include "common/denoise.glsl"
 
@@ -56,53 +57,59 @@ struct History {
   bool valid;
 };
 
+// One return and an unrolled tap loop without `continue`: an early return becomes a one-trip loop
+// when inlined, and NVIDIA's OpenGL SPIR-V front end compiles loops as loops (docs/performance.md).
 History reproject(ivec2 p, Surface cur) {
   History h = History(vec3(0.0), vec2(0.0), 0.0, false);
-  if (params.history_valid == 0u || !hit(cur)) return h;
   vec4 mv = texelFetch(motion, p, 0);
   vec2 prev = vec2(p) + 0.5 + mv.xy;
 #ifdef VIRTUAL_MOTION
   bool through_reflection = mv.z > 0.5;
 #endif
-  if (not_finite(prev.x) || not_finite(prev.y)) return h;
   vec2 pos = prev - 0.5;
   vec2 base = floor(pos);
   vec2 f = pos - base;
   // Far outside: nothing to fetch (also keeps ivec conversion in range).
-  if (base.x < -1.0 || base.y < -1.0 || base.x >= float(params.width) || base.y >= float(params.height)) return h;
-  ivec2 b = ivec2(base);
+  const bool fetch = params.history_valid != 0u && hit(cur) && !not_finite(prev.x) && !not_finite(prev.y) &&
+                     !(base.x < -1.0 || base.y < -1.0 || base.x >= float(params.width) || base.y >= float(params.height));
   float sum_w = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    ivec2 o = ivec2(k & 1, k >> 1);
-    ivec2 q = b + o;
-    if (q.x < 0 || q.y < 0 || !inside(q, params.width, params.height)) continue;
-    float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
-    if (w <= 0.0) continue;
-    vec4 mq = texelFetch(prev_moments, q, 0);
-    if (!(mq.z > 0.0)) continue;
-    Surface before = surface_from(texelFetch(prev_depth_normal, q, 0));
+  if (fetch) {
+    ivec2 b = ivec2(base);
+    [[unroll]] for (int k = 0; k < 4; ++k) {
+      ivec2 o = ivec2(k & 1, k >> 1);
+      ivec2 q = b + o;
+      float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+      if (q.x >= 0 && q.y >= 0 && inside(q, params.width, params.height) && w > 0.0) {
+        vec4 mq = texelFetch(prev_moments, q, 0);
+        Surface before = surface_from(texelFetch(prev_depth_normal, q, 0));
 #ifdef VIRTUAL_MOTION
-    // Moved through a reflection's virtual point (motion.z = 1, specular_motion.comp), the history
-    // lies on another part of the reflector, whose depth differs with the distance moved: only the
-    // normal (flat reflectors) and a loose depth bound are tested there.
-    if (through_reflection) {
-      if (!hit(before) || abs(cur.z - before.z) > 0.1 * cur.z || dot(cur.n, before.n) < kReprojNormalCos) continue;
-    } else if (!reprojection_consistent(cur, before)) {
-      continue;
-    }
+        // Moved through a reflection's virtual point (motion.z = 1, specular_motion.comp), the
+        // history lies on another part of the reflector, whose depth differs with the distance
+        // moved: only the normal (flat reflectors) and a loose depth bound are tested there.
+        const bool consistent =
+            through_reflection
+                ? hit(before) && !(abs(cur.z - before.z) > 0.1 * cur.z) && !(dot(cur.n, before.n) < kReprojNormalCos)
+                : reprojection_consistent(cur, before);
 #else
-    if (!reprojection_consistent(cur, before)) continue;
+        const bool consistent = reprojection_consistent(cur, before);
 #endif
-    h.color += w * texelFetch(prev_color, q, 0).rgb;
-    h.moments += w * mq.xy;
-    h.len += w * mq.z;
-    sum_w += w;
+        if (mq.z > 0.0 && consistent) {
+          h.color += w * texelFetch(prev_color, q, 0).rgb;
+          h.moments += w * mq.xy;
+          h.len += w * mq.z;
+          sum_w += w;
+        }
+      }
+    }
   }
-  if (sum_w < 0.01) return History(vec3(0.0), vec2(0.0), 0.0, false);
-  h.color /= sum_w;
-  h.moments /= sum_w;
-  h.len /= sum_w;
-  h.valid = true;
+  if (!(sum_w < 0.01)) {
+    h.color /= sum_w;
+    h.moments /= sum_w;
+    h.len /= sum_w;
+    h.valid = true;
+  } else {
+    h = History(vec3(0.0), vec2(0.0), 0.0, false);
+  }
   return h;
 }
 

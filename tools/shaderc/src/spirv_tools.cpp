@@ -26,6 +26,10 @@ std::vector<std::uint32_t> optimize_spirv(const std::vector<std::uint32_t>& spir
   spvtools::Optimizer optimizer(target_env(env));
   optimizer.SetMessageConsumer(collect(log));
   optimizer.RegisterPerformancePasses();
+  // Loops the source marks [[unroll]] are unrolled here, so that every target gets straight code
+  // (NVIDIA's OpenGL SPIR-V front end keeps a loop as a conditional loop; docs/performance.md).
+  optimizer.RegisterPass(spvtools::CreateLoopUnrollPass(true));
+  optimizer.RegisterPerformancePasses();
   std::vector<std::uint32_t> out;
   if (!optimizer.Run(spirv.data(), spirv.size(), &out))
     throw ToolError(shader + ": error: SPIR-V optimisation failed:\n" + log);
