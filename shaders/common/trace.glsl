@@ -60,8 +60,11 @@ ShearedRay shear_ray(vec3 o, vec3 d) {
 // them (the edge functions of a shared edge are exact negatives; `precise` keeps compilers from
 // fusing them into FMAs, which would break that). Points on an edge count as inside.
 // Returns (t, weight of p1, weight of p2); t < 0 when there is no hit in (tmin, tmax). Rejects as
-// early as it can: most candidates of a traversal miss.
+// early as it can (most candidates of a traversal miss), by nested tests and one `return`: an early
+// return becomes a one-trip loop when inlined, and NVIDIA's OpenGL compiles that as a loop in the
+// traversal's innermost loop (docs/performance.md).
 vec3 intersect_triangle(ShearedRay r, vec3 p0, vec3 p1, vec3 p2, float tmin, float tmax) {
+  vec3 result = vec3(-1.0);
   precise vec3 a = permute_axes(p0 - r.o, r.kz);
   precise vec3 b = permute_axes(p1 - r.o, r.kz);
   precise vec3 c = permute_axes(p2 - r.o, r.kz);
@@ -73,15 +76,18 @@ vec3 intersect_triangle(ShearedRay r, vec3 p0, vec3 p1, vec3 p2, float tmin, flo
   precise float cy = c.y - r.shear.y * c.z;
   precise float u = cx * by - cy * bx;
   precise float v = ax * cy - ay * cx;
-  if ((u < 0.0 && v > 0.0) || (u > 0.0 && v < 0.0)) return vec3(-1.0);
-  precise float w = bx * ay - by * ax;
-  if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return vec3(-1.0);
-  precise float det = u + v + w;
-  if (det == 0.0) return vec3(-1.0);
-  precise float depth = u * (r.shear.z * a.z) + v * (r.shear.z * b.z) + w * (r.shear.z * c.z);
-  float t = depth / det;
-  if (!(t > tmin && t < tmax)) return vec3(-1.0);
-  return vec3(t, v / det, w / det);
+  if (!((u < 0.0 && v > 0.0) || (u > 0.0 && v < 0.0))) {
+    precise float w = bx * ay - by * ax;
+    if (!((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0))) {
+      precise float det = u + v + w;
+      if (det != 0.0) {
+        precise float depth = u * (r.shear.z * a.z) + v * (r.shear.z * b.z) + w * (r.shear.z * c.z);
+        float t = depth / det;
+        if (t > tmin && t < tmax) result = vec3(t, v / det, w / det);
+      }
+    }
+  }
+  return result;
 }
 
 vec3 intersect_triangle_index(ShearedRay r, uint tri, float tmin, float tmax) {
@@ -168,22 +174,24 @@ Hit traverse(vec3 o, vec3 d, float tmin, float tmax, uint skip, bool any_hit) {
   uint stack[kBvhStackSize];
   uint top = 0u;
   uint node = 0u;
+  bool found_any = false;  // any_hit's stop: breaks, not a `return` (see intersect_triangle)
   for (;;) {
     uint first = bvh_nodes.values[node].first;
     uint count = bvh_nodes.values[node].count;
     if (count > 0u) {
       for (uint i = 0u; i < count; ++i) {
         uint tri = bvh_triangles.values[first + i];
-        if (tri == skip) continue;
-        vec3 x = intersect_triangle_index(r, tri, tmin, tmax);
+        vec3 x = tri == skip ? vec3(-1.0) : intersect_triangle_index(r, tri, tmin, tmax);
         if (x.x >= 0.0 && closer(x.x, tri, h)) {
           h.hit = true;
           h.triangle = tri;
           h.t = x.x;
           h.bary = x.yz;
-          if (any_hit) return h;
+          found_any = any_hit;
+          if (found_any) break;
         }
       }
+      if (found_any) break;
     } else {
       uint left = first;
       uint right = first + 1u;
