@@ -63,52 +63,59 @@ float ggx_lambda(float mu, float alpha) {
 float glossy_lobe_probability(Glossy g, float n_v) {
   float s = luminance(fresnel(g, n_v));
   float d = luminance(diffuse_weight(g, n_v));
-  if (d <= 0.0) return 1.0;
-  return clamp(s / (s + d), 0.1, 0.9);
+  return d <= 0.0 ? 1.0 : clamp(s / (s + d), 0.1, 0.9);
 }
 
 // f(v, l) cos(theta_l) and the sampling pdf of l (per solid angle), in the frame where n = z; v and l
 // are unit vectors there with v.z > 0. `specular`: the GGX lobe's part of the result (the rest is
 // the diffuse lobe's), for the path tracer's split into diffuse and specular signals.
+// One return (see common/trace.glsl's intersect_triangle).
 vec3 glossy_f_cos(Glossy g, vec3 v, vec3 l, out float pdf, out vec3 specular) {
   pdf = 0.0;
   specular = vec3(0.0);
-  if (l.z <= 0.0 || v.z <= 0.0) return vec3(0.0);
-  vec3 h = normalize(v + l);
-  float d = ggx_d(h, g.alpha);
-  float lambda_v = ggx_lambda(v.z, g.alpha);
-  float g2 = 1.0 / (1.0 + lambda_v + ggx_lambda(l.z, g.alpha));
-  vec3 spec = fresnel(g, dot(v, h)) * (d * g2 / (4.0 * v.z));  // times l.z / l.z
-  vec3 diff = diffuse_weight(g, v.z) * (l.z / kPi);
-  float p = glossy_lobe_probability(g, v.z);
-  pdf = p * d / (4.0 * v.z * (1.0 + lambda_v)) + (1.0 - p) * l.z / kPi;
-  specular = spec;
-  return spec + diff;
+  vec3 result = vec3(0.0);
+  if (!(l.z <= 0.0 || v.z <= 0.0)) {
+    vec3 h = normalize(v + l);
+    float d = ggx_d(h, g.alpha);
+    float lambda_v = ggx_lambda(v.z, g.alpha);
+    float g2 = 1.0 / (1.0 + lambda_v + ggx_lambda(l.z, g.alpha));
+    vec3 spec = fresnel(g, dot(v, h)) * (d * g2 / (4.0 * v.z));  // times l.z / l.z
+    vec3 diff = diffuse_weight(g, v.z) * (l.z / kPi);
+    float p = glossy_lobe_probability(g, v.z);
+    pdf = p * d / (4.0 * v.z * (1.0 + lambda_v)) + (1.0 - p) * l.z / kPi;
+    specular = spec;
+    result = spec + diff;
+  }
+  return result;
 }
 
 // A direction l (frame n = z) from three uniform numbers; l.z <= 0 means the sample left the
 // hemisphere (the path ends there).
+// One return (see common/trace.glsl's intersect_triangle).
 vec3 glossy_sample(Glossy g, vec3 v, float u0, float u1, float u2) {
+  vec3 l;
   if (u0 >= glossy_lobe_probability(g, v.z)) {
     float r = sqrt(u1);
     float phi = 2.0 * kPi * u2;
-    return vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u1)));
+    l = vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u1)));
+  } else {
+    // Visible normals: stretch the view to the unit-roughness configuration, sample the projected
+    // disk of the hemisphere it sees, unstretch.
+    vec3 vh = normalize(vec3(g.alpha * v.x, g.alpha * v.y, v.z));
+    float len2 = vh.x * vh.x + vh.y * vh.y;
+    vec3 t1 = len2 > 0.0 ? vec3(-vh.y, vh.x, 0.0) * inversesqrt(len2) : vec3(1.0, 0.0, 0.0);
+    vec3 t2 = cross(vh, t1);
+    float r = sqrt(u1);
+    float phi = 2.0 * kPi * u2;
+    float p1 = r * cos(phi);
+    float p2 = r * sin(phi);
+    float s = 0.5 * (1.0 + vh.z);
+    p2 = (1.0 - s) * sqrt(max(0.0, 1.0 - p1 * p1)) + s * p2;
+    vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
+    vec3 h = normalize(vec3(g.alpha * nh.x, g.alpha * nh.y, max(nh.z, 0.0)));
+    l = reflect(-v, h);
   }
-  // Visible normals: stretch the view to the unit-roughness configuration, sample the projected
-  // disk of the hemisphere it sees, unstretch.
-  vec3 vh = normalize(vec3(g.alpha * v.x, g.alpha * v.y, v.z));
-  float len2 = vh.x * vh.x + vh.y * vh.y;
-  vec3 t1 = len2 > 0.0 ? vec3(-vh.y, vh.x, 0.0) * inversesqrt(len2) : vec3(1.0, 0.0, 0.0);
-  vec3 t2 = cross(vh, t1);
-  float r = sqrt(u1);
-  float phi = 2.0 * kPi * u2;
-  float p1 = r * cos(phi);
-  float p2 = r * sin(phi);
-  float s = 0.5 * (1.0 + vh.z);
-  p2 = (1.0 - s) * sqrt(max(0.0, 1.0 - p1 * p1)) + s * p2;
-  vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
-  vec3 h = normalize(vec3(g.alpha * nh.x, g.alpha * nh.y, max(nh.z, 0.0)));
-  return reflect(-v, h);
+  return l;
 }
 
 // The GGX lobe's directional albedo seen from n.v by Karis's fit of the split-sum table

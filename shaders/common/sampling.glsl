@@ -24,28 +24,31 @@ vec3 sample_cosine(vec3 n, float u1, float u2) {
 
 // Direction inside the cone subtended by a sphere (uniform in solid angle). Returns the pdf (per
 // solid angle) in w; w = 0 when x is inside the sphere.
+// One return in this and the next (see common/trace.glsl's intersect_triangle).
 vec4 sample_sphere_cone(vec3 x, vec3 centre, float radius, float u1, float u2) {
   vec3 to = centre - x;
   float d2 = dot(to, to);
-  if (d2 <= radius * radius) return vec4(0.0);
-  float cos_max = sqrt(max(0.0, 1.0 - radius * radius / d2));
-  float cos_theta = 1.0 - u1 * (1.0 - cos_max);
-  float sin_theta = sqrt(max(0.0, 1.0 - cos_theta * cos_theta));
-  float phi = 2.0 * kPi * u2;
-  vec3 w = to / sqrt(d2);
-  vec3 t, b;
-  basis(w, t, b);
-  vec3 dir = normalize(sin_theta * cos(phi) * t + sin_theta * sin(phi) * b + cos_theta * w);
-  return vec4(dir, 1.0 / (2.0 * kPi * (1.0 - cos_max)));
+  vec4 result = vec4(0.0);
+  if (!(d2 <= radius * radius)) {
+    float cos_max = sqrt(max(0.0, 1.0 - radius * radius / d2));
+    float cos_theta = 1.0 - u1 * (1.0 - cos_max);
+    float sin_theta = sqrt(max(0.0, 1.0 - cos_theta * cos_theta));
+    float phi = 2.0 * kPi * u2;
+    vec3 w = to / sqrt(d2);
+    vec3 t, b;
+    basis(w, t, b);
+    vec3 dir = normalize(sin_theta * cos(phi) * t + sin_theta * sin(phi) * b + cos_theta * w);
+    result = vec4(dir, 1.0 / (2.0 * kPi * (1.0 - cos_max)));
+  }
+  return result;
 }
 
 // Solid-angle pdf of sample_sphere_cone for any direction that hits the sphere.
 float sphere_cone_pdf(vec3 x, vec3 centre, float radius) {
   vec3 to = centre - x;
   float d2 = dot(to, to);
-  if (d2 <= radius * radius) return 0.0;
   float cos_max = sqrt(max(0.0, 1.0 - radius * radius / d2));
-  return 1.0 / (2.0 * kPi * (1.0 - cos_max));
+  return d2 <= radius * radius ? 0.0 : 1.0 / (2.0 * kPi * (1.0 - cos_max));
 }
 
 // Uniform point on a triangle (barycentric weights of p1, p2).

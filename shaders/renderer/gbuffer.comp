@@ -35,9 +35,8 @@ layout(set = 0, binding = 13, rgba16f) writeonly uniform image2D albedo;
 float plane_depth(vec2 pixel, vec3 point, vec3 n) {
   vec3 d = camera_ray(cam, pixel, params.width, params.height);
   float denom = dot(n, d);
-  if (abs(denom) < 1e-12) return 0.0;
   float t = dot(n, point - cam.position.xyz) / denom;
-  return dot(t * d, cam.forward.xyz);
+  return abs(denom) < 1e-12 ? 0.0 : dot(t * d, cam.forward.xyz);  // one return (common/trace.glsl)
 }
 
 void main() {

@@ -137,83 +137,99 @@ Vertex make_vertex(uint tri, vec3 n, vec3 v_world, vec3 albedo) {
 // against BSDF sampling; x is the point's spawn_origin. On a Lambertian vertex the result still
 // needs the albedo (Le cos / (pi pdf) w), on a glossy one it is complete (Le f cos / pdf w). Skips
 // the emissive triangle `self` (no self-illumination); shadow rays skip it too. `specular`: the
-// GGX lobe's part of the result.
+// GGX lobe's part of the result. Each rejection clears `usable` instead of returning: an early
+// return becomes a one-trip loop when inlined, which NVIDIA's OpenGL compiles as a loop around the
+// shadow ray's traversal (docs/performance.md). The random numbers are drawn as before.
 vec3 sample_light(vec3 x, vec3 n, uint self, Vertex vertex, inout uint state, out vec3 specular) {
   specular = vec3(0.0);
-  if (params.light_count == 0u) return vec3(0.0);
-  // Pick a light by its probability (power).
-  float u = next_random(state);
-  uint index = params.light_count - 1u;
-  float acc = 0.0;
-  for (uint i = 0u; i < params.light_count; ++i) {
-    acc += lights.values[i].pdf;
-    if (u < acc) {
-      index = i;
-      break;
+  vec3 result = vec3(0.0);
+  if (params.light_count != 0u) {
+    // Pick a light by its probability (power).
+    float u = next_random(state);
+    uint index = params.light_count - 1u;
+    float acc = 0.0;
+    for (uint i = 0u; i < params.light_count; ++i) {
+      acc += lights.values[i].pdf;
+      if (u < acc) {
+        index = i;
+        break;
+      }
+    }
+    Light l = load_light(index);
+    float u1 = next_random(state);
+    float u2 = next_random(state);
+    bool usable = !(l.pdf <= 0.0);
+    vec3 dir = vec3(0.0);
+    float dist = 0.0;
+    float pdf_light = 0.0;  // per solid angle, including the choice of light
+    if (usable && l.type == 0u) {
+      vec4 s = sample_sphere_cone(x, l.position, l.radius, u1, u2);
+      usable = !(s.w <= 0.0);
+      if (usable) {
+        dir = s.xyz;
+        float t_hit;
+        // Another sphere light in front occludes this one (its own sample counts it), as does a miss.
+        int hit = hit_sphere_lights(x, dir, 0.0, 1e30, params.sphere_count, t_hit);
+        usable = hit == int(index);
+        dist = t_hit;
+        pdf_light = s.w * l.pdf;
+      }
+    } else if (usable) {
+      usable = l.triangle != self;
+      if (usable) {
+        Triangle t = load_triangle(l.triangle);
+        vec2 b = sample_triangle(u1, u2);
+        vec3 y = t.p0 * (1.0 - b.x - b.y) + t.p1 * b.x + t.p2 * b.y;
+        vec3 to = y - x;
+        float d2 = dot(to, to);
+        dist = sqrt(d2);
+        dir = to / dist;
+        float cos_light = abs(dot(triangle_normal(t), dir));
+        usable = !(cos_light <= 0.0 || l.area <= 0.0);
+        if (usable) pdf_light = l.pdf * d2 / (l.area * cos_light);
+      }
+    }
+    float cos_x = dot(n, dir);
+    usable = usable && !(cos_x <= 0.0);
+    if (usable) {
+      vec3 f_cos = vec3(cos_x / kPi);
+      vec3 f_cos_specular = vec3(0.0);
+      float pdf_bsdf = cos_x / kPi;
+      if (vertex.glossy) {
+        f_cos = glossy_f_cos(vertex.model, vertex.v, vec3(dot(dir, vertex.t), dot(dir, vertex.b), cos_x), pdf_bsdf,
+                             f_cos_specular);
+        usable = !(pdf_bsdf <= 0.0);
+      }
+      // A sphere light in front of a triangle light occludes it, as a BSDF-sampled path would find.
+      float t_sphere;
+      if (usable && l.type != 0u)
+        usable = hit_sphere_lights(x, dir, 0.0, dist * kShadowEnd, params.sphere_count, t_sphere) < 0;
+      if (usable) {
+        rays_traced += 1u;
+        if (!trace_any(x, dir, 0.0, dist * kShadowEnd, self)) {
+          float w = power_heuristic(pdf_light, pdf_bsdf);
+          specular = l.emission * f_cos_specular / pdf_light * w;
+          result = l.emission * f_cos / pdf_light * w;
+        }
+      }
     }
   }
-  Light l = load_light(index);
-  float u1 = next_random(state);
-  float u2 = next_random(state);
-  if (l.pdf <= 0.0) return vec3(0.0);
-  vec3 dir;
-  float dist;
-  float pdf_light;  // per solid angle, including the choice of light
-  if (l.type == 0u) {
-    vec4 s = sample_sphere_cone(x, l.position, l.radius, u1, u2);
-    if (s.w <= 0.0) return vec3(0.0);
-    dir = s.xyz;
-    float t_hit;
-    // Another sphere light in front occludes this one (its own sample counts it), as does a miss.
-    int hit = hit_sphere_lights(x, dir, 0.0, 1e30, params.sphere_count, t_hit);
-    if (hit != int(index)) return vec3(0.0);
-    dist = t_hit;
-    pdf_light = s.w * l.pdf;
-  } else {
-    if (l.triangle == self) return vec3(0.0);
-    Triangle t = load_triangle(l.triangle);
-    vec2 b = sample_triangle(u1, u2);
-    vec3 y = t.p0 * (1.0 - b.x - b.y) + t.p1 * b.x + t.p2 * b.y;
-    vec3 to = y - x;
-    float d2 = dot(to, to);
-    dist = sqrt(d2);
-    dir = to / dist;
-    float cos_light = abs(dot(triangle_normal(t), dir));
-    if (cos_light <= 0.0 || l.area <= 0.0) return vec3(0.0);
-    pdf_light = l.pdf * d2 / (l.area * cos_light);
-  }
-  float cos_x = dot(n, dir);
-  if (cos_x <= 0.0) return vec3(0.0);
-  vec3 f_cos = vec3(cos_x / kPi);
-  vec3 f_cos_specular = vec3(0.0);
-  float pdf_bsdf = cos_x / kPi;
-  if (vertex.glossy) {
-    f_cos = glossy_f_cos(vertex.model, vertex.v, vec3(dot(dir, vertex.t), dot(dir, vertex.b), cos_x), pdf_bsdf,
-                         f_cos_specular);
-    if (pdf_bsdf <= 0.0) return vec3(0.0);
-  }
-  // A sphere light in front of a triangle light occludes it, as a BSDF-sampled path would find.
-  float t_sphere;
-  if (l.type != 0u && hit_sphere_lights(x, dir, 0.0, dist * kShadowEnd, params.sphere_count, t_sphere) >= 0)
-    return vec3(0.0);
-  rays_traced += 1u;
-  if (trace_any(x, dir, 0.0, dist * kShadowEnd, self)) return vec3(0.0);
-  float w = power_heuristic(pdf_light, pdf_bsdf);
-  specular = l.emission * f_cos_specular / pdf_light * w;
-  return l.emission * f_cos / pdf_light * w;
+  return result;
 }
 
 // Light pdf (per solid angle) of hitting emissive triangle `tri` from x along dir at distance t.
 float emissive_triangle_pdf(uint tri, vec3 x, vec3 dir, float t) {
+  float pdf = 0.0;
   for (uint i = params.sphere_count; i < params.light_count; ++i) {
-    if (lights.values[i].triangle != tri) continue;
-    Triangle tr = load_triangle(tri);
-    float cos_light = abs(dot(triangle_normal(tr), dir));
-    float area = lights.values[i].area;
-    if (cos_light <= 0.0 || area <= 0.0) return 0.0;
-    return lights.values[i].pdf * t * t / (area * cos_light);
+    if (lights.values[i].triangle == tri) {
+      Triangle tr = load_triangle(tri);
+      float cos_light = abs(dot(triangle_normal(tr), dir));
+      float area = lights.values[i].area;
+      if (!(cos_light <= 0.0 || area <= 0.0)) pdf = lights.values[i].pdf * t * t / (area * cos_light);
+      break;
+    }
   }
-  return 0.0;
+  return pdf;
 }
 
 // One path from a known first surface point (triangle tri at barycentrics b, normal n facing the

@@ -50,20 +50,24 @@ Light load_light(uint i) {
 
 // Diffuse albedo at a point of a triangle: the material's, times its texture when it has one
 // (nearest texel, repeating; untextured materials fetch nothing).
+// One return (see common/trace.glsl's intersect_triangle).
 vec3 surface_albedo(uint tri, vec2 bary) {
   uint material = triangles.values[tri].material;
   vec4 a = materials.values[material].albedo;
-  if (a.w < 0.5) return a.rgb;
-  uint tex = uint(a.w + 0.5) - 1u;
-  vec2 uv = triangle_uvs.values[tri].uv0 * (1.0 - bary.x - bary.y) + triangle_uvs.values[tri].uv1 * bary.x +
-            triangle_uvs.values[tri].uv2 * bary.y;
-  uint offset = texels.values[4u * tex];
-  uint w = texels.values[4u * tex + 1u];
-  uint h = texels.values[4u * tex + 2u];
-  vec2 f = fract(uv);
-  uvec2 t = min(uvec2(f * vec2(float(w), float(h))), uvec2(w - 1u, h - 1u));
-  vec3 srgb = unpackUnorm4x8(texels.values[offset + t.y * w + t.x]).rgb;
-  return a.rgb * srgb_to_linear(srgb);
+  vec3 albedo = a.rgb;
+  if (!(a.w < 0.5)) {
+    uint tex = uint(a.w + 0.5) - 1u;
+    vec2 uv = triangle_uvs.values[tri].uv0 * (1.0 - bary.x - bary.y) + triangle_uvs.values[tri].uv1 * bary.x +
+              triangle_uvs.values[tri].uv2 * bary.y;
+    uint offset = texels.values[4u * tex];
+    uint w = texels.values[4u * tex + 1u];
+    uint h = texels.values[4u * tex + 2u];
+    vec2 f = fract(uv);
+    uvec2 t = min(uvec2(f * vec2(float(w), float(h))), uvec2(w - 1u, h - 1u));
+    vec3 srgb = unpackUnorm4x8(texels.values[offset + t.y * w + t.x]).rgb;
+    albedo = a.rgb * srgb_to_linear(srgb);
+  }
+  return albedo;
 }
 
 // Whether the triangle's material has a GGX lobe (common/bsdf.glsl); if not it is Lambertian.
@@ -77,16 +81,21 @@ Glossy triangle_glossy_model(uint tri, vec3 base) {
   return make_glossy(base, s.x, s.y, s.z);
 }
 
+// One return in these (see common/trace.glsl's intersect_triangle).
 // The albedo the denoiser divides illumination by and composite multiplies back: the surface's
 // (a glossy one's directional albedo seen at cos(theta) = n_v), but 1 on emitters, whose emitted
 // radiance is not reflectance-modulated; dividing it by a dark albedo would push a valid emission
 // (<= 65504) past what the fp16 histories hold.
 vec3 demodulation_albedo(uint tri, vec2 bary, float n_v) {
-  if (materials.values[triangles.values[tri].material].emission.a > 0.0) return vec3(1.0);
-  vec3 albedo = surface_albedo(tri, bary);
-  if (!triangle_glossy(tri)) return albedo;
-  float roughness = materials.values[triangles.values[tri].material].surface.x;
-  return glossy_albedo(triangle_glossy_model(tri, albedo), roughness, clamp(n_v, 0.0, 1.0));
+  vec3 albedo = vec3(1.0);
+  if (!(materials.values[triangles.values[tri].material].emission.a > 0.0)) {
+    albedo = surface_albedo(tri, bary);
+    if (triangle_glossy(tri)) {
+      float roughness = materials.values[triangles.values[tri].material].surface.x;
+      albedo = glossy_albedo(triangle_glossy_model(tri, albedo), roughness, clamp(n_v, 0.0, 1.0));
+    }
+  }
+  return albedo;
 }
 
 // The two albedos when the denoiser filters diffuse and specular light apart: the diffuse lobe's
@@ -96,14 +105,16 @@ vec3 demodulation_albedo(uint tri, vec2 bary, float n_v) {
 void split_demodulation_albedos(uint tri, vec2 bary, float n_v, out vec3 diffuse, out vec3 specular) {
   diffuse = vec3(1.0);
   specular = vec3(0.0);
-  if (materials.values[triangles.values[tri].material].emission.a > 0.0) return;
-  diffuse = surface_albedo(tri, bary);
-  if (!triangle_glossy(tri)) return;
-  float roughness = materials.values[triangles.values[tri].material].surface.x;
-  Glossy g = triangle_glossy_model(tri, diffuse);
-  float c = clamp(n_v, 0.0, 1.0);
-  diffuse = diffuse_weight(g, c);
-  specular = max(glossy_specular_albedo_fit(g, roughness, c), vec3(0.0));
+  if (!(materials.values[triangles.values[tri].material].emission.a > 0.0)) {
+    diffuse = surface_albedo(tri, bary);
+    if (triangle_glossy(tri)) {
+      float roughness = materials.values[triangles.values[tri].material].surface.x;
+      Glossy g = triangle_glossy_model(tri, diffuse);
+      float c = clamp(n_v, 0.0, 1.0);
+      diffuse = diffuse_weight(g, c);
+      specular = max(glossy_specular_albedo_fit(g, roughness, c), vec3(0.0));
+    }
+  }
 }
 
 #include "common/trace.glsl"
