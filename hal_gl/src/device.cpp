@@ -68,7 +68,9 @@ GLenum image_access(Access access) {
 // Drivers that run our programs faster from SPIR-V than from GLSL, measured (docs/performance.md):
 // NVIDIA's (H200, 1080p frame 6.6 against 7.5 ms, denoiser 0.648 against 0.672). Mesa's llvmpipe
 // runs the OpenGL suites slower from SPIR-V (78 s of CPU against 20); other drivers are unmeasured.
-bool spirv_measured_faster(const std::string& vendor) { return vendor.find("NVIDIA") != std::string::npos; }
+bool spirv_measured_faster(const std::string& vendor) {
+  return vendor.find("NVIDIA") != std::string::npos;
+}
 
 // Whether programs are loaded as SPIR-V (GL_ARB_gl_spirv) rather than compiled from GLSL, on
 // OpenGL 4.5: ASVGF_GL_SHADERS=glsl or spirv chooses; unset, SPIR-V where the context has the
