@@ -217,9 +217,14 @@ PipelineHandle GlDevice::create_pipeline(const ComputePipelineDesc& desc) {
                   "shader '" + std::string(shader.name) + "' uses " + std::to_string(used) + " " + l.what + "; " +
                       adapter_.name + " allows " + std::to_string(gl_int(l.query)) + " in a compute shader");
   }
-  const GLuint compute = glCreateShader(GL_COMPUTE_SHADER);
   const std::string_view spirv = spirv_shaders_ ? shader.source("spirv-gl") : std::string_view{};
-  if (!spirv.empty()) {
+  // No quiet fallback to GLSL: a test that asked for SPIR-V programs would pass on GLSL ones.
+  if (spirv_shaders_ && spirv.empty())
+    throw Error(ErrorKind::InvalidUsage, desc.name,
+                "shader '" + std::string(shader.name) +
+                    "' has no OpenGL SPIR-V translation (spirv-gl) to load; ASVGF_GL_SHADERS=glsl compiles its GLSL");
+  const GLuint compute = glCreateShader(GL_COMPUTE_SHADER);
+  if (spirv_shaders_) {
     glShaderBinary(1, &compute, GL_SHADER_BINARY_FORMAT_SPIR_V_ARB, spirv.data(), static_cast<GLsizei>(spirv.size()));
     glSpecializeShaderARB(compute, "main", 0, nullptr, nullptr);
   } else {

@@ -2,6 +2,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "env_guard.hpp"
 #include "validated_device.hpp"
 
 using hal::vulkan::AdapterReport;
@@ -16,22 +17,6 @@ AdapterReport fake(std::uint32_t index, const char* name, hal::DeviceType type) 
   a.info.api_version = "Vulkan 1.3.280";
   return a;
 }
-
-// Restores an environment variable when the test ends.
-struct EnvGuard {
-  std::string name;
-  std::string old;
-  bool had;
-  explicit EnvGuard(const char* n) : name(n), had(std::getenv(n) != nullptr) {
-    if (had) old = std::getenv(n);
-  }
-  ~EnvGuard() {
-    if (had)
-      setenv(name.c_str(), old.c_str(), 1);
-    else
-      unsetenv(name.c_str());
-  }
-};
 
 }  // namespace
 
