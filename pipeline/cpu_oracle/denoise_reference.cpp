@@ -13,8 +13,12 @@ namespace {
 Surface surface_at(const ImageD& dn, int x, int y) {
   return surface_from(dn.at(x, y, 0), dn.at(x, y, 1), dn.at(x, y, 2), dn.at(x, y, 3));
 }
-double lum_at(const ImageD& img, int x, int y) { return luminance(img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2)); }
-int clampi(int v, int lo, int hi) { return std::min(std::max(v, lo), hi); }
+double lum_at(const ImageD& img, int x, int y) {
+  return luminance(img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2));
+}
+int clampi(int v, int lo, int hi) {
+  return std::min(std::max(v, lo), hi);
+}
 
 }  // namespace
 
@@ -204,8 +208,10 @@ TemporalResult temporal(const TemporalInputs& in, const TemporalParams& params) 
       const double s[3] = {in.illumination->at(x, y, 0), in.illumination->at(x, y, 1), in.illumination->at(x, y, 2)};
       const bool missing = any_not_finite(s[0], s[1], s[2]);
       if (missing) {
-        if (std::isnan(s[0]) || std::isnan(s[1]) || std::isnan(s[2])) ++out.nan_samples;
-        else ++out.inf_samples;
+        if (std::isnan(s[0]) || std::isnan(s[1]) || std::isnan(s[2]))
+          ++out.nan_samples;
+        else
+          ++out.inf_samples;
       }
       const History hist = reproject(in, params, x, y, cur);
       double color[3], m[2], n;
@@ -245,7 +251,8 @@ TemporalResult temporal(const TemporalInputs& in, const TemporalParams& params) 
   return out;
 }
 
-ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& dn, const VarianceParams& params) {
+ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& dn, const ImageD& albedo,
+                const VarianceParams& params) {
   const int w = integrated.width, h = integrated.height;
   ImageD out(w, h, 4);
   for (int y = 0; y < h; ++y)
@@ -256,7 +263,13 @@ ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& d
       const Surface center = surface_at(dn, x, y);
       double var = std::max(0.0, m1 - m0 * m0);
       if (center.hit() && n > 0 && n < params.min_history) {
-        const double lp = luminance(color[0], color[1], color[2]);
+        // The luminance weight compares radiance: colours re-modulated by this pixel's albedo.
+        const double a[3] = {albedo.at(x, y, 0), albedo.at(x, y, 1), albedo.at(x, y, 2)};
+        const auto radiance_lum = [&](int qx, int qy) {
+          return luminance(a[0] * integrated.at(qx, qy, 0), a[1] * integrated.at(qx, qy, 1),
+                           a[2] * integrated.at(qx, qy, 2));
+        };
+        const double lp = radiance_lum(x, y);
         double sum_c[3] = {0, 0, 0}, sum_m[2] = {0, 0}, sum_w = 0, sum_wm = 0;
         for (int dy = -3; dy <= 3; ++dy)
           for (int dx = -3; dx <= 3; ++dx) {
@@ -270,7 +283,7 @@ ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& d
               const double dist = std::abs(dx) + std::abs(dy);
               w_surface =
                   weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n);
-              wgt = w_surface * weight_luminance(lp, lum_at(integrated, qx, qy), params.sigma_l, 1.0);
+              wgt = w_surface * weight_luminance(lp, radiance_lum(qx, qy), params.sigma_l, 1.0);
             }
             // One frame of history: the moments by depth and normal alone (shaders/denoise/variance.comp).
             const double wm = n < 1.5 ? w_surface : wgt;

@@ -75,8 +75,8 @@ TemporalResult temporal(const TemporalInputs& in, const TemporalParams& params);
 struct VarianceParams {
   double sigma_z = 1, sigma_n = 128, sigma_l = 4, min_history = 4;
 };
-// variance.comp: rgb colour, a variance.
-ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& depth_normal,
+// variance.comp: rgb colour, a variance. `albedo`: what the signal is re-modulated by (rgb).
+ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& depth_normal, const ImageD& albedo,
                 const VarianceParams& params);
 
 struct AtrousParams {

@@ -2,8 +2,8 @@
 // pass's colour and moments, for the variance pass (denoise/variance.comp) and for the first a-trous
 // iteration that estimates it while loading its tile (denoise/atrous.comp, FUSED_VARIANCE). The
 // including shader declares `params` (width, height, sigma_z, sigma_n, sigma_l, min_history) and the
-// textures `integrated` (RGBA16F rgb, temporal variance), `moments` (E[l], E[l^2], n) and
-// `depth_normal`. With at least min_history frames of history: the temporal estimate max(0, E[l^2] -
+// textures `integrated` (RGBA16F rgb, temporal variance), `moments` (E[l], E[l^2], n),
+// `depth_normal` and `albedo` (what the signal is re-modulated by). With at least min_history frames of history: the temporal estimate max(0, E[l^2] -
 // E[l]^2); with less, a 7x7 edge-aware spatial estimate of the moments (and of the colour), boosted
 // by min_history / n as in Falcor's SVGF, except that with one frame of history the moments are
 // weighted by depth and normal only (see below). The 7x7 neighbours are fetched directly, only by
@@ -24,7 +24,12 @@ vec4 estimate_color_variance(ivec2 p, Surface center) {
   float variance = max(0.0, m.y - m.x * m.x);
 
   if (hit(center) && n > 0.0 && n < params.min_history) {
-    float lp = luminance(color);
+    // The luminance weight has no variance to scale by, so it compares radiance, in which sigma_l
+    // is set: the neighbours' light re-modulated by this pixel's albedo. Comparing the demodulated
+    // signal made the weight 1/albedo times stricter, and demodulation cost error on untextured
+    // surfaces where it should change nothing (docs/quality.md).
+    vec3 ap = texelFetch(albedo, p, 0).rgb;
+    float lp = luminance(ap * color);
     vec3 sum_c = vec3(0.0);
     vec2 sum_m = vec2(0.0);
     float sum_w = 0.0, sum_wm = 0.0;
@@ -44,7 +49,7 @@ vec4 estimate_color_variance(ivec2 p, Surface center) {
           float dist = float(abs(dx) + abs(dy));
           w_surface = weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n);
           // No variance yet: the luminance weight uses sigma_l alone (std dev taken as 1).
-          w = w_surface * weight_luminance(lp, luminance(cq), params.sigma_l, 1.0);
+          w = w_surface * weight_luminance(lp, luminance(ap * cq), params.sigma_l, 1.0);
         }
         sum_c += w * cq;
         sum_w += w;

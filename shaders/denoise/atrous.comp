@@ -7,7 +7,7 @@
 // depth_normal per tap; PACKED_OUT writes them for the next iteration; a chain's last iteration
 // writes RGBA16F for composite. PACKED_OUT alone (FIRST_PACKED) is a chain's first iteration
 // (step 1): it reads its taps from a shared-memory tile, and estimates each tile texel's colour and
-// variance from the temporal pass's output and moments (common/variance_estimate.glsl), so the
+// variance from the temporal pass's output, moments and the albedo (common/variance_estimate.glsl), so the
 // variance pass (48 bytes a pixel and a dispatch) does not run. Without PACKED_* (the box kernel,
 // one iteration, images too large for packed texels) the first iteration reads the variance pass's
 // RGBA16F image. HISTORY also writes the result to the colour history (the history tap). COMPOSITE
@@ -86,6 +86,7 @@ layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_history;
 #endif
 #ifdef FIRST_PACKED
 layout(set = 0, binding = 5, r32f) writeonly uniform image2D depth_gradient_out;
+layout(set = 0, binding = 7) uniform texture2D albedo;  // the variance estimate's (COMPOSITE's binding)
 #include "common/variance_estimate.glsl"
 #endif
 

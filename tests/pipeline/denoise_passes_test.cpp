@@ -436,6 +436,7 @@ TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and
     const ImageD dn = random_depth_normal(r, w, h);
     const ImageD integrated = random_color(r, w, h, 0, 4, 2);
     const ImageD moments = random_moments(r, w, h);
+    const ImageD albedo = random_color(r, w, h, 0.05, 1, 1);  // textured: a different albedo at every pixel
     GraphHarness harness(*device);
     RenderGraph g;
     const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
@@ -443,16 +444,71 @@ TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and
     passes::add_variance(
         g, pipelines,
         {harness.input(g, "integrated", integrated, F::RGBA16F), harness.input(g, "moments", moments, F::RGBA32F),
-         harness.input(g, "depth_normal", dn, F::RGBA32F), out},
+         harness.input(g, "depth_normal", dn, F::RGBA32F), out, harness.input(g, "albedo", albedo, F::RGBA16F)},
         settings);
     ImageD got;
     harness.readback(g, out, &got);
     harness.run(g);
-    const ImageD want =
-        ref::variance(quantize(integrated, F::RGBA16F), quantize(moments, F::RGBA32F), quantize(dn, F::RGBA32F),
-                      {settings.sigma_z, settings.sigma_n, settings.sigma_l, settings.min_history});
+    const ImageD want = ref::variance(quantize(integrated, F::RGBA16F), quantize(moments, F::RGBA32F),
+                                      quantize(dn, F::RGBA32F), quantize(albedo, F::RGBA16F),
+                                      {settings.sigma_z, settings.sigma_n, settings.sigma_l, settings.min_history});
     DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(80)), "variance");
   }
+}
+
+// Dividing an untextured surface's light by its albedo a, and multiplying the result back, must
+// change nothing: the demodulated estimate is the radiance's colour / a and variance / a^2. With
+// a = 1/4 every scaling is exact in fp16 and fp32, so the two runs agree to the bit. The spatial
+// estimate's luminance weight, which has no variance to scale by, broke this when it compared the
+// demodulated signal (docs/quality.md: demodulation where it should be neutral).
+TEST_CASE("denoise passes: the variance estimate of demodulated light is the radiance's, scaled (grey albedo)") {
+  ValidatedDevice device;
+  passes::PipelineCache pipelines(*device);
+  asvgf::DenoiseSettings settings;
+  const int w = 29, h = 23;
+  const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
+  Random r(53u);
+  const ImageD dn = random_depth_normal(r, w, h);
+  const ImageD radiance = quantize(random_color(r, w, h, 0, 4, 2), F::RGBA16F);
+  const ImageD moments = random_moments(r, w, h);
+  constexpr double kAlbedo = 0.25;
+  const auto run = [&](double albedo_value) {
+    ImageD integrated = radiance, m = moments, albedo(w, h, 4);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        for (int c = 0; c < 4; ++c) {
+          integrated.at(x, y, c) /= c < 3 ? albedo_value : albedo_value * albedo_value;
+          albedo.at(x, y, c) = albedo_value;
+        }
+        m.at(x, y, 0) /= albedo_value;
+        m.at(x, y, 1) /= albedo_value * albedo_value;
+      }
+    GraphHarness harness(*device);
+    RenderGraph g;
+    const auto out = g.add_image("color_variance", uw, uh, F::RGBA16F);
+    passes::add_variance(
+        g, pipelines,
+        {harness.input(g, "integrated", integrated, F::RGBA16F), harness.input(g, "moments", m, F::RGBA32F),
+         harness.input(g, "depth_normal", dn, F::RGBA32F), out, harness.input(g, "albedo", albedo, F::RGBA16F)},
+        settings);
+    ImageD got;
+    harness.readback(g, out, &got);
+    harness.run(g);
+    return got;
+  };
+  const ImageD of_radiance = run(1.0), of_demodulated = run(kAlbedo);
+  int spatial = 0, differing = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double n = moments.at(x, y, 2);
+      spatial += dn.at(x, y, 0) > 0 && n > 0 && n < settings.min_history;
+      for (int c = 0; c < 4; ++c) {
+        const double scale = c < 3 ? kAlbedo : kAlbedo * kAlbedo;
+        differing += of_demodulated.at(x, y, c) * scale != of_radiance.at(x, y, c);
+      }
+    }
+  CHECK(spatial > w * h / 4);  // the spatial estimate, which the property is about, runs
+  CHECK(differing == 0);
 }
 
 TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and box, steps 1, 2, 4, history tap)") {
@@ -539,10 +595,13 @@ TEST_CASE(
     const auto history_first = g.add_image("color_history.1", uw, uh, F::RGBA16F, Lifetime::Persistent);
     const auto history = g.add_image("color_history.2", uw, uh, F::RGBA16F, Lifetime::Persistent);
     const auto depth_gradient = g.add_image("depth_gradient", uw, uh, F::R32F);
-    passes::add_atrous(g, pipelines,
-                       {harness.input(g, "integrated", color, F::RGBA16F), dn_in, first, history_first, "",
-                        depth_gradient, harness.input(g, "moments", moments, F::RGBA32F)},
-                       0, settings);
+    const ImageD estimate_albedo = random_color(r, w, h, 0.05, 1, 1);
+    passes::add_atrous(
+        g, pipelines,
+        {harness.input(g, "integrated", color, F::RGBA16F), dn_in, first, history_first, "", depth_gradient,
+         passes::VarianceEstimateInputs{harness.input(g, "moments", moments, F::RGBA32F),
+                                        harness.input(g, "estimate_albedo", estimate_albedo, F::RGBA16F)}},
+        0, settings);
     passes::add_atrous(g, pipelines, {first, dn_in, middle, history, "", depth_gradient}, 1, settings);
     passes::add_atrous(g, pipelines, {middle, dn_in, last, std::nullopt, "", depth_gradient}, 2, settings);
     // The same last iteration compositing itself, with a history tap on every other size.
@@ -580,6 +639,7 @@ TEST_CASE(
     // within the same tolerance.
     const ImageD color_variance =
         quantize(ref::variance(quantize(color, F::RGBA16F), quantize(moments, F::RGBA32F), dn_q,
+                               quantize(estimate_albedo, F::RGBA16F),
                                {settings.sigma_z, settings.sigma_n, settings.sigma_l, settings.min_history}),
                  F::RGBA16F);
     DENOISE_CHECK_CLOSE(compare(t1.color, ref::atrous(color_variance, dn_q, params(0)), 4, fp16_tolerance(80)),
@@ -631,7 +691,9 @@ TEST_CASE(
   // The shared-memory tile that writes the first packed texels assumes step 1.
   RenderGraph g;
   const auto img = g.add_image("color_in", 8, 8, F::RGBA16F), dn = g.add_image("depth_normal", 8, 8, F::RGBA32F);
-  const auto dz = g.add_image("depth_gradient", 8, 8, F::R32F), mom = g.add_image("moments", 8, 8, F::RGBA32F);
+  const auto dz = g.add_image("depth_gradient", 8, 8, F::R32F);
+  const auto alb = g.add_image("albedo", 8, 8, F::RGBA16F);
+  const passes::VarianceEstimateInputs mom{g.add_image("moments", 8, 8, F::RGBA32F), alb};
   const auto packed = [&](const char* name, std::uint64_t bytes) { return g.add_buffer(name, bytes); };
   CHECK_THROWS_AS(
       passes::add_atrous(g, pipelines, {img, dn, packed("out", 8 * 8 * 16), std::nullopt, "", dz, mom}, 1, settings),
@@ -641,7 +703,7 @@ TEST_CASE(
       passes::add_atrous(
           g, pipelines, {img, dn, packed("no_gradient", 8 * 8 * 16), std::nullopt, "", std::nullopt, mom}, 0, settings),
       std::invalid_argument);
-  // The first packed iteration estimates the variance from the moments; no other reads them.
+  // The first packed iteration estimates the variance from the moments and albedo; no other reads them.
   CHECK_THROWS_AS(
       passes::add_atrous(g, pipelines, {img, dn, packed("no_moments", 8 * 8 * 16), std::nullopt, "", dz}, 0, settings),
       std::invalid_argument);
@@ -662,11 +724,18 @@ TEST_CASE(
                                       g.add_image("depth_gradient.small", 8, 7, F::R32F), mom},
                                      0, settings),
                   std::invalid_argument);
-  CHECK_THROWS_AS(passes::add_atrous(g, pipelines,
-                                     {img, dn, packed("narrow_moments", 8 * 8 * 16), std::nullopt, "", dz,
-                                      g.add_image("moments.small", 7, 8, F::RGBA32F)},
-                                     0, settings),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      passes::add_atrous(g, pipelines,
+                         {img, dn, packed("narrow_moments", 8 * 8 * 16), std::nullopt, "", dz,
+                          passes::VarianceEstimateInputs{g.add_image("moments.small", 7, 8, F::RGBA32F), alb}},
+                         0, settings),
+      std::invalid_argument);
+  CHECK_THROWS_AS(
+      passes::add_atrous(g, pipelines,
+                         {img, dn, packed("narrow_albedo", 8 * 8 * 16), std::nullopt, "", dz,
+                          passes::VarianceEstimateInputs{mom.moments, g.add_image("albedo.small", 8, 7, F::RGBA16F)}},
+                         0, settings),
+      std::invalid_argument);
   CHECK_NOTHROW(
       passes::add_atrous(g, pipelines, {img, dn, packed("fits", 8 * 8 * 16), std::nullopt, "", dz, mom}, 0, settings));
 }

@@ -51,10 +51,10 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
   if ((packed_in || packed_out) && !r.depth_gradient)
     throw std::invalid_argument("add_atrous: a packed iteration needs the depth_gradient image");
   const bool first_packed = packed_out && !packed_in;
-  if (first_packed != r.moments.has_value())
-    throw std::invalid_argument(first_packed
-                                    ? "add_atrous: the first packed iteration estimates the variance: it needs moments"
-                                    : "add_atrous: only the first packed iteration reads moments");
+  if (first_packed != r.estimate.has_value())
+    throw std::invalid_argument(
+        first_packed ? "add_atrous: the first packed iteration estimates the variance: it needs moments and albedo"
+                     : "add_atrous: only the first packed iteration reads the variance estimate's moments and albedo");
   // Every image and buffer must cover depth_normal's size, over which the pass dispatches.
   std::vector<graph::ResourceId> covering{r.color_in};
   if (composite)
@@ -62,7 +62,7 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
   else
     covering.push_back(r.color_out);
   if (r.depth_gradient) covering.push_back(*r.depth_gradient);
-  if (r.moments) covering.push_back(*r.moments);
+  if (r.estimate) covering.insert(covering.end(), {r.estimate->moments, r.estimate->albedo});
   for (const graph::ResourceId id : covering) {
     const auto& other = graph.resource(id);
     const bool covers = other.kind == hal::ResourceKind::Buffer
@@ -83,7 +83,7 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
                                      {"counters", r.composite->counters}});
   else
     bindings.push_back({"color_out", r.color_out});
-  if (first_packed) bindings.push_back({"moments", *r.moments});
+  if (first_packed) bindings.insert(bindings.end(), {{"moments", r.estimate->moments}, {"albedo", r.estimate->albedo}});
   if (packed_in)
     bindings.push_back({"depth_gradient", *r.depth_gradient});
   else

@@ -12,13 +12,18 @@
 
 namespace asvgf::passes {
 
+struct VarianceEstimateInputs {
+  graph::ResourceId moments = 0;
+  graph::ResourceId albedo = 0;
+};
+
 struct AtrousResources {
   // color_in and color_out: RGBA16F images (rgb, variance) or storage buffers of packed filter
   // texels (16 bytes a pixel, in rows; shaders/common/filter_texel.glsl), which carry the surface too
   // and which the iterations between a chain's first and last pass on. A buffer out from an image in
   // is the first iteration only (it reads a shared-memory tile that needs step 1), and it estimates
   // the variance itself: its color_in is the temporal pass's output (rgb, temporal variance) and it
-  // also reads `moments` (the variance pass's inputs).
+  // also reads `estimate` (the variance pass's other inputs).
   graph::ResourceId color_in = 0;                  // read
   graph::ResourceId depth_normal = 0;              // read (not by packed-in iterations): RGBA32F
   graph::ResourceId color_out = 0;                 // written (not with `composite`)
@@ -27,7 +32,9 @@ struct AtrousResources {
   // R32F, depth_normal's depth gradient, which the packed texel has no room for: written by the
   // first packed iteration, read by every packed-in one instead of depth_normal.
   std::optional<graph::ResourceId> depth_gradient;
-  std::optional<graph::ResourceId> moments;  // read by the first packed iteration: RGBA32F (E[l], E[l^2], n)
+  // Read by the first packed iteration's variance estimate: the moments, RGBA32F (E[l], E[l^2], n),
+  // and the albedo the signal is re-modulated by (the spatial estimate compares radiance).
+  std::optional<VarianceEstimateInputs> estimate;
   // A one-signal chain's last packed-in iteration may do the composite pass's work itself
   // (specular must be absent): it writes hdr and display instead of color_out, and its pass is
   // named "<prefix>atrous.<iteration + 1>+composite". The illumination it composites is its own

@@ -3,6 +3,7 @@
 #include "asvgf/denoiser_graph.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 
 #include "denoiser/passes/atrous.hpp"
@@ -27,7 +28,7 @@ struct Chain {
   graph::ResourceId filtered = 0, moments = 0, integrated = 0, variance = 0, color_history = 0;
   bool composited = false;
 };
-Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId signal,
+Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId signal, graph::ResourceId albedo,
                 const std::string& prefix, const GraphDenoiserInputs& in, std::optional<graph::ResourceId> gradient,
                 const DenoiseSettings& s, Filter filter, std::optional<CompositeResources> composite,
                 std::optional<graph::ResourceId> virtual_motion = std::nullopt) {
@@ -53,7 +54,7 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   // estimates the variance itself, so where only the chain reads, the graph leaves this pass out.
   ResourceId current = graph.add_image(prefix + "color_variance", w, h, F::RGBA16F);
   c.variance = current;
-  add_variance(graph, pipelines, {c.integrated, c.moments, in.depth_normal, current, prefix}, s);
+  add_variance(graph, pipelines, {c.integrated, c.moments, in.depth_normal, current, albedo, prefix}, s);
   const std::uint64_t range = pipelines.device().capabilities().max_storage_buffer_range;
   const std::uint64_t max_storage_binding = range ? range : std::uint64_t{1} << 27;  // 0: not known
   std::optional<ResourceId> depth_gradient;  // for the packed iterations (denoiser/passes/atrous.hpp)
@@ -81,7 +82,7 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
     } else {
       add_atrous(graph, pipelines,
                  {first_packed ? c.integrated : current, in.depth_normal, next, history, prefix, depth_gradient,
-                  first_packed ? std::optional(c.moments) : std::nullopt},
+                  first_packed ? std::optional(VarianceEstimateInputs{c.moments, albedo}) : std::nullopt},
                  i, s);
     }
     current = next;
@@ -99,6 +100,8 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
   using graph::ResourceId;
   const auto& decl = graph.resource(in.illumination);
   const std::uint32_t w = decl.width, h = decl.height;
+  if (in.specular && !in.specular_albedo)
+    throw std::invalid_argument("add_denoiser: a specular signal needs its specular_albedo");
   GraphDenoiserOutputs out;
   out.filtered = in.illumination;
   const Filter filter = !method                        ? Filter::None
@@ -141,7 +144,7 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
     const std::optional<CompositeResources> composite =
         in.specular ? std::nullopt
                     : std::optional(CompositeResources{0, in.albedo, in.hdr, in.display, in.counters, {}, {}});
-    diffuse = add_chain(graph, pipelines, in.illumination, "", in, out.gradient, s, filter, composite);
+    diffuse = add_chain(graph, pipelines, in.illumination, in.albedo, "", in, out.gradient, s, filter, composite);
     out.filtered = diffuse.filtered;
     out.moments = diffuse.moments;
     out.integrated = diffuse.integrated;
@@ -151,8 +154,8 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
       DenoiseSettings specular = s;
       specular.atrous_iterations = s.specular_atrous_iterations;
       specular.history_tap = std::min(s.history_tap, std::max(0, s.specular_atrous_iterations - 1));
-      out.specular = add_chain(graph, pipelines, *in.specular, "specular.", in, out.gradient, specular, filter,
-                               std::nullopt, in.specular_motion)
+      out.specular = add_chain(graph, pipelines, *in.specular, *in.specular_albedo, "specular.", in, out.gradient,
+                               specular, filter, std::nullopt, in.specular_motion)
                          .filtered;
     }
   } else {

@@ -22,7 +22,8 @@ graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipeli
                           {{"integrated", r.integrated},
                            {"moments", r.moments},
                            {"depth_normal", r.depth_normal},
-                           {"color_variance", r.color_variance}},
+                           {"color_variance", r.color_variance},
+                           {"albedo", r.albedo}},
                           to_bytes(u), {u.width, u.height, 1});
 }
 

@@ -15,6 +15,7 @@ struct VarianceResources {
   graph::ResourceId moments = 0;         // read: this frame's RGBA32F moments (E[l], E[l^2], n)
   graph::ResourceId depth_normal = 0;    // read: RGBA32F
   graph::ResourceId color_variance = 0;  // written: RGBA16F (rgb, variance)
+  graph::ResourceId albedo = 0;          // read: what the signal is re-modulated by (the spatial estimate's scale)
   std::string prefix;                    // of the pass name: "specular." for the second signal
 };
 // Adds "<prefix>variance".
