@@ -107,6 +107,7 @@ GlDevice::GlDevice(const DeviceOptions& options)
   adapter_.api_version += spirv_shaders_ ? ", programs from SPIR-V (GL_ARB_gl_spirv)"
                           : es           ? ", programs from ESSL"
                                          : ", programs from GLSL";
+  immutable_buffers_ = !es || epoxy_has_gl_extension("GL_EXT_buffer_storage");
   capabilities_.ray_query = false;
   capabilities_.acceleration_structures = false;
   capabilities_.fp16_storage = false;
@@ -160,10 +161,15 @@ BufferHandle GlDevice::create_buffer(const BufferDesc& desc) {
   BufferObject object{desc, 0};
   glGenBuffers(1, &object.buffer);
   glBindBuffer(GL_COPY_WRITE_BUFFER, object.buffer);
-  glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(desc.size), nullptr, GL_DYNAMIC_COPY);
+  const auto size = static_cast<GLsizeiptr>(desc.size);
+  // Dynamic storage: uploads write with glBufferSubData.
+  if (immutable_buffers_)
+    glBufferStorage(GL_COPY_WRITE_BUFFER, size, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  else
+    glBufferData(GL_COPY_WRITE_BUFFER, size, nullptr, GL_DYNAMIC_COPY);
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
   try {
-    check_gl(desc.name, "glBufferData");
+    check_gl(desc.name, immutable_buffers_ ? "glBufferStorage" : "glBufferData");
   } catch (...) {
     glDeleteBuffers(1, &object.buffer);
     throw;
@@ -505,14 +511,26 @@ void GlDevice::copy_image_to_buffer(ImageHandle src, BufferHandle dst) {
 
 void GlDevice::clear_buffer(BufferHandle handle, std::uint32_t word) {
   const BufferObject& b = buffers_.get(handle.id, "buffer");
-  std::vector<std::uint32_t> words(b.desc.size / 4, word);
+  const auto bytes = static_cast<GLsizeiptr>(b.desc.size / 4 * 4);
   glBindBuffer(GL_COPY_WRITE_BUFFER, b.buffer);
-  glBufferSubData(GL_COPY_WRITE_BUFFER, 0, static_cast<GLsizeiptr>(words.size() * 4), words.data());
+  if (options_.flavour == Flavour::Gl) {
+    // Filled by the GPU: the upload below took about 0.6 s a GB on the H200, and a buffer the host
+    // filled copied at a third of the bandwidth afterwards (docs/performance.md).
+    glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, 0, bytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &word);
+  } else {  // OpenGL ES has no buffer clear
+    std::vector<std::uint32_t> words(b.desc.size / 4, word);
+    glBufferSubData(GL_COPY_WRITE_BUFFER, 0, bytes, words.data());
+  }
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
 }
 
 void GlDevice::clear_image(ImageHandle handle, std::array<float, 4> value) {
   const ImageObject& i = images_.get(handle.id, "image");
+  if (options_.flavour == Flavour::Gl) {  // filled by the GPU, as clear_buffer
+    const auto texel = texels_of(i.desc.format, value, 1);
+    glClearTexImage(i.texture, 0, i.format.format, i.format.type, texel.data());
+    return;
+  }
   const auto texels = texels_of(i.desc.format, value, std::size_t{i.desc.width} * i.desc.height);
   glBindTexture(GL_TEXTURE_2D, i.texture);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, static_cast<GLsizei>(i.desc.width), static_cast<GLsizei>(i.desc.height),

@@ -123,11 +123,15 @@ class GlDevice final : public Device {
   Capabilities capabilities_;
   GLuint uniform_buffer_ = 0;    // refilled (orphaned) for every dispatch's uniform block
   GLuint read_framebuffer_ = 0;  // OpenGL ES reads images back through it
+  // Programs from the shader tool's OpenGL SPIR-V ("spirv-gl") instead of its GLSL.
+  bool spirv_shaders_ = false;
+  // Buffers with immutable storage (glBufferStorage: OpenGL 4.4+, ES with GL_EXT_buffer_storage):
+  // copies through NVIDIA's glBufferData(GL_DYNAMIC_COPY) buffers ran at 0.95-2.4 TB/s at some
+  // sizes where these ran at Vulkan's 2.8-3.7 (docs/performance.md).
+  bool immutable_buffers_ = false;
   // read_buffer copies into this and maps it, never the buffer the passes use: NVIDIA's driver may
   // move a buffer that is mapped for reading into system memory, where every atomic the passes do
   // on it crosses the bus.
-  // Programs from the shader tool's OpenGL SPIR-V ("spirv-gl") instead of its GLSL.
-  bool spirv_shaders_ = false;
   GLuint readback_buffer_ = 0;
   std::uint64_t readback_size_ = 0;
   bool debug_output_ = false;
