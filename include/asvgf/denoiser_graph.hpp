@@ -26,7 +26,9 @@ struct GraphDenoiserInputs {
   // gradient max(|dz/dx|, |dz/dy|), zw the octahedral-encoded unit normal (shaders/common/octahedral.glsl);
   // background where x is not finite, <= 0 or >= kBackgroundDepth (asvgf::is_background_depth).
   graph::ResourceId depth_normal = 0;
-  graph::ResourceId albedo = 0;    // read: RGBA16F, what composite re-modulates by
+  // read: RGBA16F, what composite re-modulates by; also the short-history variance estimate's
+  // scale (it compares radiance, the neighbours re-modulated by the pixel's albedo)
+  graph::ResourceId albedo = 0;
   graph::ResourceId counters = 0;  // SanitizeCounters::import of this graph
   graph::ResourceId hdr = 0;       // written by composite: RGBA32F linear radiance
   graph::ResourceId display = 0;   // written by composite: RGBA8 tonemapped sRGB
@@ -41,7 +43,8 @@ struct GraphDenoiserInputs {
   // Two signals (pathtrace's SPLIT_SPECULAR, scenes with glossy materials): `illumination` is the
   // diffuse one, with the one-signal luminance in .a for the gradient, and `specular` (RGBA32F,
   // divided by `specular_albedo`, RGBA16F) gets a chain of its own: passes and histories named
-  // "specular.*", the same gradient; composite adds it re-modulated.
+  // "specular.*", the same gradient; composite adds it re-modulated. `specular_albedo` is required
+  // with `specular` (add_denoiser throws std::invalid_argument without it).
   std::optional<graph::ResourceId> specular, specular_albedo;
   // With `specular`: its history's motion through the reflection's virtual point (specular_motion);
   // absent, the specular history follows `motion`.

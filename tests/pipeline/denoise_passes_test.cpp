@@ -12,6 +12,7 @@
 #include <doctest/doctest.h>
 
 #include "asvgf/denoiser.hpp"
+#include "asvgf/denoiser_graph.hpp"
 #include "asvgf/sanitize_counters.hpp"
 #include "cpu_oracle/denoise_reference.hpp"
 #include "denoiser/passes/atrous.hpp"
@@ -509,6 +510,24 @@ TEST_CASE("denoise passes: the variance estimate of demodulated light is the rad
     }
   CHECK(spatial > w * h / 4);  // the spatial estimate, which the property is about, runs
   CHECK(differing == 0);
+}
+
+// The specular chain's variance estimate and composite read the specular albedo: a graph that
+// names a specular signal without it is refused where it is declared, not at a null resource.
+TEST_CASE("denoise passes: add_denoiser refuses a specular signal without its specular_albedo") {
+  ValidatedDevice device;
+  passes::PipelineCache pipelines(*device);
+  RenderGraph g;
+  passes::GraphDenoiserInputs in;
+  in.illumination = g.add_image("illumination", 8, 8, F::RGBA32F);
+  in.motion = g.add_image("motion", 8, 8, F::RGBA32F);
+  in.depth_normal = g.add_image("depth_normal", 8, 8, F::RGBA32F, Lifetime::Persistent);
+  in.albedo = g.add_image("albedo", 8, 8, F::RGBA16F);
+  in.hdr = g.add_image("hdr", 8, 8, F::RGBA32F);
+  in.display = g.add_image("display", 8, 8, F::RGBA8Unorm);
+  in.specular = g.add_image("specular", 8, 8, F::RGBA32F);
+  CHECK_THROWS_AS(passes::add_denoiser(g, pipelines, in, asvgf::DenoiseSettings{}, asvgf::DenoiseMethod::Svgf),
+                  std::invalid_argument);
 }
 
 TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and box, steps 1, 2, 4, history tap)") {
