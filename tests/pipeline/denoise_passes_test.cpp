@@ -426,6 +426,30 @@ TEST_CASE(
   }
 }
 
+namespace {
+
+// The variance pass on these inputs (integrated and albedo as RGBA16F, moments and depth_normal as
+// RGBA32F), read back.
+ImageD run_variance(hal::Device& device, passes::PipelineCache& pipelines, const ImageD& integrated,
+                    const ImageD& moments, const ImageD& dn, const ImageD& albedo,
+                    const asvgf::DenoiseSettings& settings) {
+  GraphHarness harness(device);
+  RenderGraph g;
+  const auto out = g.add_image("color_variance", static_cast<std::uint32_t>(integrated.width),
+                               static_cast<std::uint32_t>(integrated.height), F::RGBA16F);
+  passes::add_variance(
+      g, pipelines,
+      {harness.input(g, "integrated", integrated, F::RGBA16F), harness.input(g, "moments", moments, F::RGBA32F),
+       harness.input(g, "depth_normal", dn, F::RGBA32F), out, harness.input(g, "albedo", albedo, F::RGBA16F)},
+      settings);
+  ImageD got;
+  harness.readback(g, out, &got);
+  harness.run(g);
+  return got;
+}
+
+}  // namespace
+
 TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and spatial estimates)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
@@ -438,18 +462,7 @@ TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and
     const ImageD integrated = random_color(r, w, h, 0, 4, 2);
     const ImageD moments = random_moments(r, w, h);
     const ImageD albedo = random_color(r, w, h, 0.05, 1, 1);  // textured: a different albedo at every pixel
-    GraphHarness harness(*device);
-    RenderGraph g;
-    const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
-    const auto out = g.add_image("color_variance", uw, uh, F::RGBA16F);
-    passes::add_variance(
-        g, pipelines,
-        {harness.input(g, "integrated", integrated, F::RGBA16F), harness.input(g, "moments", moments, F::RGBA32F),
-         harness.input(g, "depth_normal", dn, F::RGBA32F), out, harness.input(g, "albedo", albedo, F::RGBA16F)},
-        settings);
-    ImageD got;
-    harness.readback(g, out, &got);
-    harness.run(g);
+    const ImageD got = run_variance(*device, pipelines, integrated, moments, dn, albedo, settings);
     const ImageD want = ref::variance(quantize(integrated, F::RGBA16F), quantize(moments, F::RGBA32F),
                                       quantize(dn, F::RGBA32F), quantize(albedo, F::RGBA16F),
                                       {settings.sigma_z, settings.sigma_n, settings.sigma_l, settings.min_history});
@@ -467,7 +480,6 @@ TEST_CASE("denoise passes: the variance estimate of demodulated light is the rad
   passes::PipelineCache pipelines(*device);
   asvgf::DenoiseSettings settings;
   const int w = 29, h = 23;
-  const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
   Random r(53u);
   const ImageD dn = random_depth_normal(r, w, h);
   const ImageD radiance = quantize(random_color(r, w, h, 0, 4, 2), F::RGBA16F);
@@ -484,18 +496,7 @@ TEST_CASE("denoise passes: the variance estimate of demodulated light is the rad
         m.at(x, y, 0) /= albedo_value;
         m.at(x, y, 1) /= albedo_value * albedo_value;
       }
-    GraphHarness harness(*device);
-    RenderGraph g;
-    const auto out = g.add_image("color_variance", uw, uh, F::RGBA16F);
-    passes::add_variance(
-        g, pipelines,
-        {harness.input(g, "integrated", integrated, F::RGBA16F), harness.input(g, "moments", m, F::RGBA32F),
-         harness.input(g, "depth_normal", dn, F::RGBA32F), out, harness.input(g, "albedo", albedo, F::RGBA16F)},
-        settings);
-    ImageD got;
-    harness.readback(g, out, &got);
-    harness.run(g);
-    return got;
+    return run_variance(*device, pipelines, integrated, m, dn, albedo, settings);
   };
   const ImageD of_radiance = run(1.0), of_demodulated = run(kAlbedo);
   int spatial = 0, differing = 0;
