@@ -54,7 +54,7 @@ struct GraphDenoiserInputs {
 struct GraphDenoiserOutputs {
   graph::ResourceId filtered = 0;  // what composite modulated: the last a-trous output, the EMA, or the input
   std::optional<graph::ResourceId> gradient;       // reconstructed (delta^, Delta^), when the gradient passes run
-  std::optional<graph::ResourceId> moments;        // persistent (E[l], E[l^2], n)
+  std::optional<graph::ResourceId> moments;        // persistent RGBA16F (E[l], sqrt(Var[l]), n)
   std::optional<graph::ResourceId> integrated;     // the temporal pass's output (rgb, temporal variance)
   std::optional<graph::ResourceId> variance;       // the variance pass's output, else `integrated`
   std::optional<graph::ResourceId> color_history;  // persistent colour history

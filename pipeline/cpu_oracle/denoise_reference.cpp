@@ -160,7 +160,7 @@ namespace {
 
 struct History {
   double color[3] = {0, 0, 0};
-  double m[2] = {0, 0};
+  double mean = 0, variance = 0;  // of the luminance
   double len = 0;
   bool valid = false;
 };
@@ -174,7 +174,7 @@ History reproject(const TemporalInputs& in, const TemporalParams& params, int x,
   const double bx = std::floor(px - 0.5), by = std::floor(py - 0.5);
   const double fx = (px - 0.5) - bx, fy = (py - 0.5) - by;
   if (bx < -1 || by < -1 || bx >= pc.width || by >= pc.height) return h;
-  double sum_w = 0;
+  double sum_w = 0, sum_mean_sq = 0;
   for (int k = 0; k < 4; ++k) {
     const int ox = k & 1, oy = k >> 1;
     const int qx = static_cast<int>(bx) + ox, qy = static_cast<int>(by) + oy;
@@ -185,13 +185,18 @@ History reproject(const TemporalInputs& in, const TemporalParams& params, int x,
     if (!(len > 0)) continue;
     if (!reprojection_consistent(cur, surface_at(*in.prev_depth_normal, qx, qy))) continue;
     for (int c = 0; c < 3; ++c) h.color[c] += w * pc.at(qx, qy, c);
-    for (int c = 0; c < 2; ++c) h.m[c] += w * in.prev_moments->at(qx, qy, c);
+    const double mean = in.prev_moments->at(qx, qy, 0), std_dev = in.prev_moments->at(qx, qy, 1);
+    h.mean += w * mean;
+    h.variance += w * std_dev * std_dev;
+    sum_mean_sq += w * mean * mean;
     h.len += w * len;
     sum_w += w;
   }
   if (sum_w < 0.01) return History{};
   for (double& c : h.color) c /= sum_w;
-  for (double& m : h.m) m /= sum_w;
+  h.mean /= sum_w;
+  // The taps' mixture: their mean variance plus the spread of their means.
+  h.variance = h.variance / sum_w + std::max(0.0, sum_mean_sq / sum_w - h.mean * h.mean);
   h.len /= sum_w;
   h.valid = true;
   return h;
@@ -214,15 +219,15 @@ TemporalResult temporal(const TemporalInputs& in, const TemporalParams& params) 
           ++out.inf_samples;
       }
       const History hist = reproject(in, params, x, y, cur);
-      double color[3], m[2], n;
+      double color[3], mean, var, n;
       if (missing) {
         for (int c = 0; c < 3; ++c) color[c] = hist.valid ? hist.color[c] : 0;
-        for (int c = 0; c < 2; ++c) m[c] = hist.valid ? hist.m[c] : 0;
+        mean = hist.valid ? hist.mean : 0;
+        var = hist.valid ? hist.variance : 0;
         n = hist.valid ? std::min(hist.len, params.history_cap) : 0;
       } else {
         const double c3[3] = {clamp_sample(s[0]), clamp_sample(s[1]), clamp_sample(s[2])};
         const double l = luminance(c3[0], c3[1], c3[2]);
-        const double cm[2] = {l, l * l};
         if (hist.valid) {
           double lambda = 0;
           if (in.gradient) {
@@ -234,18 +239,21 @@ TemporalResult temporal(const TemporalInputs& in, const TemporalParams& params) 
           const double a = std::max((1 - lambda) * params.alpha + lambda, 1 / n);
           const double am = std::max((1 - lambda) * params.moments_alpha + lambda, 1 / n);
           for (int c = 0; c < 3; ++c) color[c] = hist.color[c] * (1 - a) + c3[c] * a;
-          for (int c = 0; c < 2; ++c) m[c] = hist.m[c] * (1 - am) + cm[c] * am;
+          // The blend of two distributions (shaders/common/denoise.glsl: blend_moments).
+          const double d = l - hist.mean;
+          mean = hist.mean + am * d;
+          var = (1 - am) * (hist.variance + am * d * d);
         } else {
           for (int c = 0; c < 3; ++c) color[c] = c3[c];
-          for (int c = 0; c < 2; ++c) m[c] = cm[c];
+          mean = l;
+          var = 0;
           n = 1;
         }
       }
-      const double var = std::max(0.0, m[1] - m[0] * m[0]);
       for (int c = 0; c < 3; ++c) out.integrated.at(x, y, c) = clamp_fp16(color[c]);
       out.integrated.at(x, y, 3) = clamp_fp16(var);
-      out.moments.at(x, y, 0) = m[0];
-      out.moments.at(x, y, 1) = m[1];
+      out.moments.at(x, y, 0) = mean;
+      out.moments.at(x, y, 1) = std::sqrt(std::max(0.0, var));
       out.moments.at(x, y, 2) = n;
     }
   return out;
@@ -258,10 +266,10 @@ ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& d
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       double color[3] = {integrated.at(x, y, 0), integrated.at(x, y, 1), integrated.at(x, y, 2)};
-      double m0 = moments.at(x, y, 0), m1 = moments.at(x, y, 1);
+      const double mean = moments.at(x, y, 0), std_dev = moments.at(x, y, 1);
       const double n = moments.at(x, y, 2);
       const Surface center = surface_at(dn, x, y);
-      double var = std::max(0.0, m1 - m0 * m0);
+      double var = std_dev * std_dev;
       if (center.hit() && n > 0 && n < params.min_history) {
         // The luminance weight compares radiance: colours re-modulated by this pixel's albedo.
         const double a[3] = {albedo.at(x, y, 0), albedo.at(x, y, 1), albedo.at(x, y, 2)};
@@ -270,12 +278,13 @@ ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& d
                            a[2] * integrated.at(qx, qy, 2));
         };
         const double lp = radiance_lum(x, y);
-        double sum_c[3] = {0, 0, 0}, sum_m[2] = {0, 0}, sum_w = 0, sum_wm = 0;
+        // sum_m: sum w (mean, variance, mean^2), the mixture's moments.
+        double sum_c[3] = {0, 0, 0}, sum_m[3] = {0, 0, 0}, sum_w = 0, sum_wm = 0;
         for (int dy = -3; dy <= 3; ++dy)
           for (int dx = -3; dx <= 3; ++dx) {
             const int qx = x + dx, qy = y + dy;
             if (!integrated.inside(qx, qy)) continue;
-            double wgt = 1, w_surface = 1, mq[2] = {m0, m1};
+            double wgt = 1, w_surface = 1, mq[2] = {mean, std_dev};
             if (dx != 0 || dy != 0) {
               if (!(moments.at(qx, qy, 2) > 0)) continue;
               mq[0] = moments.at(qx, qy, 0), mq[1] = moments.at(qx, qy, 1);
@@ -289,13 +298,14 @@ ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& d
             const double wm = n < 1.5 ? w_surface : wgt;
             for (int c = 0; c < 3; ++c) sum_c[c] += wgt * integrated.at(qx, qy, c);
             sum_m[0] += wm * mq[0];
-            sum_m[1] += wm * mq[1];
+            sum_m[1] += wm * mq[1] * mq[1];
+            sum_m[2] += wm * mq[0] * mq[0];
             sum_w += wgt;
             sum_wm += wm;
           }
         for (int c = 0; c < 3; ++c) color[c] = sum_c[c] / sum_w;
-        m0 = sum_m[0] / sum_wm, m1 = sum_m[1] / sum_wm;
-        var = std::max(0.0, m1 - m0 * m0) * (params.min_history / n);
+        const double m_mean = sum_m[0] / sum_wm;
+        var = (sum_m[1] / sum_wm + std::max(0.0, sum_m[2] / sum_wm - m_mean * m_mean)) * (params.min_history / n);
       }
       for (int c = 0; c < 3; ++c) out.at(x, y, c) = clamp_fp16(color[c]);
       out.at(x, y, 3) = clamp_fp16(var);

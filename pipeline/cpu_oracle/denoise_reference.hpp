@@ -3,7 +3,7 @@
 // guards and clamps; only the precision differs (and fp16 stores, which the tests' tolerances cover).
 // Images use the channel layouts of the GPU resources:
 //   illumination 4 (rgb), depth_normal 4 (z, dz, oct normal), motion 2, gradient_prev 2,
-//   gradient 4 (delta, Delta, 0, 0), colour images 4 (rgb, variance), moments 4 (E[l], E[l^2], n, 0),
+//   gradient 4 (delta, Delta, 0, 0), colour images 4 (rgb, variance), moments 4 (E[l], sqrt(Var[l]), n, 0),
 //   albedo 4.
 #pragma once
 
@@ -66,7 +66,7 @@ struct TemporalInputs {
 };
 struct TemporalResult {
   ImageD integrated;  // rgb, temporal variance
-  ImageD moments;     // E[l], E[l^2], n, 0
+  ImageD moments;     // E[l], sqrt(Var[l]), n, 0 (common/denoise.glsl: Moments)
   std::uint32_t nan_samples = 0, inf_samples = 0;
 };
 // temporal.comp

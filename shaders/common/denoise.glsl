@@ -16,6 +16,24 @@ struct Surface {
 Surface surface_from(vec4 t) { return Surface(t.x, t.y, oct_decode(t.zw)); }
 bool hit(Surface s) { return s.z > 0.0; }
 
+// The luminance moments as the temporal pass stores them, RGBA16F (E[l], sqrt(Var[l]), n, 0): 8
+// bytes a pixel instead of RGBA32F's 16. fp16 cannot hold E[l^2] above l = 256, but it holds the
+// standard deviation of any luminance the clamped samples can have (<= fp16 max / 2). The passes
+// blend the mean and the variance (Chan et al.'s update, below), so a converged pixel's variance
+// is not E[l^2] - E[l]^2's difference of two large numbers.
+struct Moments {
+  float mean;
+  float variance;
+};
+Moments moments_from_stored(vec2 stored) { return Moments(stored.x, stored.y * stored.y); }
+vec2 moments_to_stored(Moments m) { return vec2(m.mean, sqrt(max(0.0, m.variance))); }
+// (1 - a) history + a sample, as distributions: the mean moves by a d and the variance is
+// (1 - a) (Var_h + a d^2), d = l - mean_h (exact; no cancellation).
+Moments blend_moments(Moments h, float l, float a) {
+  const float d = l - h.mean;
+  return Moments(h.mean + a * d, (1.0 - a) * (h.variance + a * d * d));
+}
+
 // Lower bound on the depth tolerance, relative to depth: a plane facing the camera has a zero
 // gradient, and 0/0 must not happen.
 const float kDepthEpsRel = 1e-3;

@@ -2,9 +2,9 @@
 // pass's colour and moments, for the variance pass (denoise/variance.comp) and for the first a-trous
 // iteration that estimates it while loading its tile (denoise/atrous.comp, FUSED_VARIANCE). The
 // including shader declares `params` (width, height, sigma_z, sigma_n, sigma_l, min_history) and the
-// textures `integrated` (RGBA16F rgb, temporal variance), `moments` (E[l], E[l^2], n),
-// `depth_normal` and `albedo` (what the signal is re-modulated by). With at least min_history frames of history: the temporal estimate max(0, E[l^2] -
-// E[l]^2); with less, a 7x7 edge-aware spatial estimate of the moments (and of the colour), boosted
+// textures `integrated` (RGBA16F rgb, temporal variance), `moments` (E[l], sqrt(Var[l]), n),
+// `depth_normal` and `albedo` (what the signal is re-modulated by). With at least min_history
+// frames of history: the temporal estimate Var[l]; with less, a 7x7 edge-aware spatial estimate of the moments (and of the colour), boosted
 // by min_history / n as in Falcor's SVGF, except that with one frame of history the moments are
 // weighted by depth and normal only (see below). The 7x7 neighbours are fetched directly, only by
 // pixels with a short history.
@@ -19,9 +19,9 @@ const int kVarianceRadius = 3;
 vec4 estimate_color_variance(ivec2 p, Surface center) {
   vec3 color = texelFetch(integrated, p, 0).rgb;
   vec3 mn = texelFetch(moments, p, 0).xyz;
-  vec2 m = mn.xy;
+  Moments m = moments_from_stored(mn.xy);
   float n = mn.z;
-  float variance = max(0.0, m.y - m.x * m.x);
+  float variance = m.variance;
 
   if (hit(center) && n > 0.0 && n < params.min_history) {
     // The luminance weight has no variance to scale by, so it compares radiance, in which sigma_l
@@ -31,19 +31,19 @@ vec4 estimate_color_variance(ivec2 p, Surface center) {
     vec3 ap = texelFetch(albedo, p, 0).rgb;
     float lp = luminance(ap * color);
     vec3 sum_c = vec3(0.0);
-    vec2 sum_m = vec2(0.0);
+    vec3 sum_m = vec3(0.0);  // sum w (mean, variance, mean^2): the mixture's moments
     float sum_w = 0.0, sum_wm = 0.0;
     for (int dy = -kVarianceRadius; dy <= kVarianceRadius; ++dy) {
       for (int dx = -kVarianceRadius; dx <= kVarianceRadius; ++dx) {
         float w = 1.0, w_surface = 1.0;
         vec3 cq = color;
-        vec2 mq = m;
+        Moments mq = m;
         if (dx != 0 || dy != 0) {
           ivec2 q = p + ivec2(dx, dy);
           if (q.x < 0 || q.y < 0 || !inside(q, params.width, params.height)) continue;
           vec3 other_m = texelFetch(moments, q, 0).xyz;
           if (!(other_m.z > 0.0)) continue;  // a neighbour without history is not part of the estimate
-          mq = other_m.xy;
+          mq = moments_from_stored(other_m.xy);
           cq = texelFetch(integrated, q, 0).rgb;
           Surface other = surface_from(texelFetch(depth_normal, q, 0));
           float dist = float(abs(dx) + abs(dy));
@@ -53,18 +53,18 @@ vec4 estimate_color_variance(ivec2 p, Surface center) {
         }
         sum_c += w * cq;
         sum_w += w;
-        // One frame of history: a pixel's own moments hold no variance (E[l^2] = E[l]^2), so the
+        // One frame of history: a pixel's own moments hold no variance (Var[l] = 0), so the
         // estimate is the spread of its neighbours' luminance, which the luminance weight would
         // cut exactly where it is large: a firefly (l >> sigma_l) would get variance 0 and survive
         // the a-trous untouched (glossy first frame: relMSE 0.30 against 0.028 at 192x192).
         float wm = n < 1.5 ? w_surface : w;
-        sum_m += wm * mq;
+        sum_m += wm * vec3(mq.mean, mq.variance, mq.mean * mq.mean);
         sum_wm += wm;
       }
     }
     color = sum_c / sum_w;
-    m = sum_m / sum_wm;
-    variance = max(0.0, m.y - m.x * m.x) * (params.min_history / n);
+    sum_m /= sum_wm;
+    variance = (sum_m.y + max(0.0, sum_m.z - sum_m.x * sum_m.x)) * (params.min_history / n);
   }
   return clamp_fp16(vec4(color, variance));
 }

@@ -55,7 +55,7 @@ layout(set = 0, binding = 0) uniform Params {
 layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec4 texels[]; } color_in;
 #elif defined(FIRST_PACKED)
 layout(set = 0, binding = 1) uniform texture2D integrated;  // rgb colour, a temporal variance
-layout(set = 0, binding = 6) uniform texture2D moments;     // E[l], E[l^2], history length
+layout(set = 0, binding = 6) uniform texture2D moments;     // E[l], sqrt(Var[l]), history length
 #else
 layout(set = 0, binding = 1) uniform texture2D color_in;  // rgb colour, a variance
 #endif

@@ -38,9 +38,9 @@ layout(set = 0, binding = 6) uniform texture2D prev_moments;
 layout(set = 0, binding = 8) uniform texture2D gradient;
 #endif
 layout(set = 0, binding = 9, rgba16f) writeonly uniform image2D integrated;
-// E[l], E[l^2] and the history length n in one image: fp32 because E[l^2] leaves fp16's range
-// for l > 256, and because GLES 3.1 (ESSL target) can store neither rg32f nor r16f.
-layout(set = 0, binding = 10, rgba32f) writeonly uniform image2D moments;
+// E[l], sqrt(Var[l]) and the history length n (common/denoise.glsl: moments_to_stored); four
+// channels because GLES 3.1 (ESSL target) can store neither rg16f nor r16f.
+layout(set = 0, binding = 10, rgba16f) writeonly uniform image2D moments;
 // Since the buffer was cleared: samples dropped with a NaN component, with an Inf (no NaN), finite
 // samples clamped to the fp16 maximum, and output pixels composite wrote as 0 (SanitizeCounters).
 layout(set = 0, binding = 11) buffer Counters {
@@ -52,7 +52,7 @@ layout(set = 0, binding = 11) buffer Counters {
 
 struct History {
   vec3 color;
-  vec2 moments;
+  Moments moments;
   float len;
   bool valid;
 };
@@ -60,7 +60,10 @@ struct History {
 // One return and an unrolled tap loop without `continue`: an early return becomes a one-trip loop
 // when inlined, and NVIDIA's OpenGL SPIR-V front end compiles loops as loops (docs/performance.md).
 History reproject(ivec2 p, Surface cur) {
-  History h = History(vec3(0.0), vec2(0.0), 0.0, false);
+  History h = History(vec3(0.0), Moments(0.0, 0.0), 0.0, false);
+  // The taps' mixture: sum w (mean, variance, mean^2); its variance is the taps' mean variance plus
+  // the spread of their means.
+  vec3 sum_m = vec3(0.0);
   vec4 mv = texelFetch(motion, p, 0);
   vec2 prev = vec2(p) + 0.5 + mv.xy;
 #ifdef VIRTUAL_MOTION
@@ -95,7 +98,8 @@ History reproject(ivec2 p, Surface cur) {
 #endif
         if (mq.z > 0.0 && consistent) {
           h.color += w * texelFetch(prev_color, q, 0).rgb;
-          h.moments += w * mq.xy;
+          const Moments mt = moments_from_stored(mq.xy);
+          sum_m += w * vec3(mt.mean, mt.variance, mt.mean * mt.mean);
           h.len += w * mq.z;
           sum_w += w;
         }
@@ -104,11 +108,12 @@ History reproject(ivec2 p, Surface cur) {
   }
   if (!(sum_w < 0.01)) {
     h.color /= sum_w;
-    h.moments /= sum_w;
+    sum_m /= sum_w;
+    h.moments = Moments(sum_m.x, sum_m.y + max(0.0, sum_m.z - sum_m.x * sum_m.x));
     h.len /= sum_w;
     h.valid = true;
   } else {
-    h = History(vec3(0.0), vec2(0.0), 0.0, false);
+    h = History(vec3(0.0), Moments(0.0, 0.0), 0.0, false);
   }
   return h;
 }
@@ -136,32 +141,30 @@ void main() {
   History h = reproject(p, cur);
 
   vec3 color;
-  vec2 m;
+  Moments m;
   float n;
   if (missing) {
     // The sample is dropped: keep what the history had, or nothing.
     color = h.valid ? h.color : vec3(0.0);
-    m = h.valid ? h.moments : vec2(0.0);
+    m = h.valid ? h.moments : Moments(0.0, 0.0);
     n = h.valid ? min(h.len, params.history_cap) : 0.0;
   } else {
     if (any(greaterThan(sample_rgb, vec3(kFp16Max)))) atomicAdd(counters.clamped_samples, 1u);
     vec3 c = clamp_sample(sample_rgb);
     float l = luminance(c);
-    vec2 cm = vec2(l, l * l);
     if (h.valid) {
       float lambda = gradient_lambda(p);
       n = min(h.len * (1.0 - lambda) + 1.0, params.history_cap);
       float a = max((1.0 - lambda) * params.alpha + lambda, 1.0 / n);
       float am = max((1.0 - lambda) * params.moments_alpha + lambda, 1.0 / n);
       color = mix(h.color, c, a);
-      m = mix(h.moments, cm, am);
+      m = blend_moments(h.moments, l, am);
     } else {
       color = c;
-      m = cm;
+      m = Moments(l, 0.0);
       n = 1.0;
     }
   }
-  float variance = max(0.0, m.y - m.x * m.x);
-  imageStore(integrated, p, clamp_fp16(vec4(color, variance)));
-  imageStore(moments, p, vec4(m, n, 0.0));
+  imageStore(integrated, p, clamp_fp16(vec4(color, m.variance)));
+  imageStore(moments, p, vec4(moments_to_stored(m), n, 0.0));
 }

@@ -19,7 +19,7 @@ layout(set = 0, binding = 0, std140) uniform Params {
   float depth_scale;  // depth shown as depth * depth_scale
   float alpha;        // the temporal pass's constant alpha
   float history_cap;
-  uint available;     // 1: gradient (1/3 res: delta^, Delta^), 2: moments (E[l], E[l^2], n), 4: variance (.a)
+  uint available;     // 1: gradient (1/3 res: delta^, Delta^), 2: moments (E[l], sqrt(Var[l]), n), 4: variance (.a)
   uint pad;
 } params;
 

@@ -214,8 +214,8 @@ inline ImageD random_color(Random& r, int w, int h, double lo, double hi, double
   return img;
 }
 
-// Moments (E[l], E[l^2] >= E[l]^2, history length n): lengths of 0 (no history), below SVGF's
-// min_history of 4 (the spatial variance estimate) and above.
+// Moments as the temporal pass stores them (E[l], sqrt(Var[l]), history length n): lengths of 0 (no
+// history), below SVGF's min_history of 4 (the spatial variance estimate) and above.
 inline ImageD random_moments(Random& r, int w, int h) {
   ImageD moments(w, h, 4);
   const double lengths[] = {0, 1, 2, 3, 4, 10, 32};
@@ -223,7 +223,7 @@ inline ImageD random_moments(Random& r, int w, int h) {
     for (int x = 0; x < w; ++x) {
       const double m1 = r.uniform(0, 4);
       moments.at(x, y, 0) = static_cast<float>(m1);
-      moments.at(x, y, 1) = static_cast<float>(m1 * m1 + r.uniform(0, 2));
+      moments.at(x, y, 1) = static_cast<float>(std::sqrt(r.uniform(0, 2)));
       moments.at(x, y, 2) = lengths[static_cast<int>(r.uniform(0, 7))];
     }
   return moments;
@@ -246,6 +246,22 @@ inline Compare compare(const ImageD& got, const ImageD& want, int channels,
         const double err = std::abs(g - w);
         const double ratio = std::isfinite(g) ? err / tolerance(w) : 1e30;
         if (ratio > out.worst_ratio) out = {ratio, err, x, y, c, g, w};
+      }
+  return out;
+}
+// Stored moments (E[l], sqrt(Var[l]), n; RGBA16F) against a reference's: the mean and n within one
+// fp16 store plus 1e-5 magnitude; the standard deviation within one fp16 store plus what a variance
+// error of 1e-5 variance_magnitude (fp32 arithmetic on values that large) makes of a square root.
+inline Compare compare_moments(const ImageD& got, const ImageD& want, double magnitude, double variance_magnitude) {
+  const double dv = 1e-5 * variance_magnitude;
+  Compare out;
+  for (int y = 0; y < want.height; ++y)
+    for (int x = 0; x < want.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const double g = got.at(x, y, c), w = want.at(x, y, c);
+        const double tolerance = fp16_ulp(w) + (c == 1 ? 2 * dv / (std::abs(w) + std::sqrt(dv)) : 1e-5 * magnitude);
+        const double ratio = std::isfinite(g) ? std::abs(g - w) / tolerance : 1e30;
+        if (ratio > out.worst_ratio) out = {ratio, std::abs(g - w), x, y, c, g, w};
       }
   return out;
 }

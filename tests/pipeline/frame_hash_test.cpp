@@ -34,8 +34,8 @@ struct Expected {
 const Expected kExpected[] = {
     {frame::Method::Raw, "raw", 0x289b28bc61dbac51ull},
     {frame::Method::Ema, "ema", 0x9f2b8cddf7860f76ull},
-    {frame::Method::Svgf, "svgf", 0x3d84d9976b902a2full},
-    {frame::Method::Asvgf, "asvgf", 0x3bdce239766a9ca5ull},
+    {frame::Method::Svgf, "svgf", 0x4a27f757440e0b96ull},
+    {frame::Method::Asvgf, "asvgf", 0xd536b96379f09440ull},
     {frame::Method::Reference, "reference", 0x2862c6a1cca5a248ull},
 };
 

@@ -32,7 +32,7 @@ struct AtrousResources {
   // R32F, depth_normal's depth gradient, which the packed texel has no room for: written by the
   // first packed iteration, read by every packed-in one instead of depth_normal.
   std::optional<graph::ResourceId> depth_gradient;
-  // Read by the first packed iteration's variance estimate: the moments, RGBA32F (E[l], E[l^2], n),
+  // Read by the first packed iteration's variance estimate: the moments, RGBA16F (E[l], sqrt(Var[l]), n),
   // and the albedo the signal is re-modulated by (the spatial estimate compares radiance).
   std::optional<VarianceEstimateInputs> estimate;
   // A one-signal chain's last packed-in iteration may do the composite pass's work itself

@@ -39,7 +39,7 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   const std::uint32_t w = decl.width, h = decl.height;
   Chain c;
   c.color_history = graph.add_image(prefix + "color_history", w, h, F::RGBA16F, Lifetime::Persistent);
-  c.moments = graph.add_image(prefix + "moments", w, h, F::RGBA32F, Lifetime::Persistent);
+  c.moments = graph.add_image(prefix + "moments", w, h, F::RGBA16F, Lifetime::Persistent);
   const bool spatial = filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
   // Without a spatial filter the temporal result is itself next frame's colour history.
   c.integrated = spatial ? graph.add_image(prefix + "integrated", w, h, F::RGBA16F) : c.color_history;

@@ -18,7 +18,7 @@ struct TemporalResources {
   graph::ResourceId motion = 0;               // read: RG32F, previous minus current pixel position
   graph::ResourceId depth_normal = 0;         // read, and its history read: persistent RGBA32F
   graph::ResourceId color_history = 0;        // its history read: persistent RGBA16F (rgb, variance)
-  graph::ResourceId moments = 0;              // history read and written: persistent RGBA32F (E[l], E[l^2], n, 0)
+  graph::ResourceId moments = 0;              // history read and written: persistent RGBA16F (E[l], sqrt(Var[l]), n, 0)
   graph::ResourceId integrated = 0;           // written: RGBA16F (rgb, temporal variance); may be color_history
   graph::ResourceId counters = 0;             // read-written SanitizeCounters buffer
   std::optional<graph::ResourceId> gradient;  // read: 1/3 res RGBA16F (delta^, Delta^); adaptive alpha
