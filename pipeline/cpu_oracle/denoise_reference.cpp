@@ -158,6 +158,24 @@ ImageD gradient_atrous(const ImageD& in, const ImageD& dn, const GradientAtrousP
 
 namespace {
 
+// A weighted mixture of luminance distributions given as (mean, standard deviation): its mean, and
+// its variance as the parts' mean variance plus the spread of their means (shaders/common/
+// denoise.glsl: mixture_term, mixture_moments).
+struct Mixture {
+  double weight = 0, mean = 0, variance = 0, mean_sq = 0;  // weighted sums
+  void add(double w, double part_mean, double part_std_dev) {
+    weight += w;
+    mean += w * part_mean;
+    variance += w * part_std_dev * part_std_dev;
+    mean_sq += w * part_mean * part_mean;
+  }
+  double mixture_mean() const { return mean / weight; }
+  double mixture_variance() const {
+    const double mu = mixture_mean();
+    return variance / weight + std::max(0.0, mean_sq / weight - mu * mu);
+  }
+};
+
 struct History {
   double color[3] = {0, 0, 0};
   double mean = 0, variance = 0;  // of the luminance
@@ -174,7 +192,8 @@ History reproject(const TemporalInputs& in, const TemporalParams& params, int x,
   const double bx = std::floor(px - 0.5), by = std::floor(py - 0.5);
   const double fx = (px - 0.5) - bx, fy = (py - 0.5) - by;
   if (bx < -1 || by < -1 || bx >= pc.width || by >= pc.height) return h;
-  double sum_w = 0, sum_mean_sq = 0;
+  double sum_w = 0;
+  Mixture moments;
   for (int k = 0; k < 4; ++k) {
     const int ox = k & 1, oy = k >> 1;
     const int qx = static_cast<int>(bx) + ox, qy = static_cast<int>(by) + oy;
@@ -185,18 +204,14 @@ History reproject(const TemporalInputs& in, const TemporalParams& params, int x,
     if (!(len > 0)) continue;
     if (!reprojection_consistent(cur, surface_at(*in.prev_depth_normal, qx, qy))) continue;
     for (int c = 0; c < 3; ++c) h.color[c] += w * pc.at(qx, qy, c);
-    const double mean = in.prev_moments->at(qx, qy, 0), std_dev = in.prev_moments->at(qx, qy, 1);
-    h.mean += w * mean;
-    h.variance += w * std_dev * std_dev;
-    sum_mean_sq += w * mean * mean;
+    moments.add(w, in.prev_moments->at(qx, qy, 0), in.prev_moments->at(qx, qy, 1));
     h.len += w * len;
     sum_w += w;
   }
   if (sum_w < 0.01) return History{};
   for (double& c : h.color) c /= sum_w;
-  h.mean /= sum_w;
-  // The taps' mixture: their mean variance plus the spread of their means.
-  h.variance = h.variance / sum_w + std::max(0.0, sum_mean_sq / sum_w - h.mean * h.mean);
+  h.mean = moments.mixture_mean();
+  h.variance = moments.mixture_variance();
   h.len /= sum_w;
   h.valid = true;
   return h;
@@ -278,8 +293,8 @@ ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& d
                            a[2] * integrated.at(qx, qy, 2));
         };
         const double lp = radiance_lum(x, y);
-        // sum_m: sum w (mean, variance, mean^2), the mixture's moments.
-        double sum_c[3] = {0, 0, 0}, sum_m[3] = {0, 0, 0}, sum_w = 0, sum_wm = 0;
+        double sum_c[3] = {0, 0, 0}, sum_w = 0;
+        Mixture moments_mix;  // the neighbours' moments
         for (int dy = -3; dy <= 3; ++dy)
           for (int dx = -3; dx <= 3; ++dx) {
             const int qx = x + dx, qy = y + dy;
@@ -297,15 +312,11 @@ ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& d
             // One frame of history: the moments by depth and normal alone (shaders/denoise/variance.comp).
             const double wm = n < 1.5 ? w_surface : wgt;
             for (int c = 0; c < 3; ++c) sum_c[c] += wgt * integrated.at(qx, qy, c);
-            sum_m[0] += wm * mq[0];
-            sum_m[1] += wm * mq[1] * mq[1];
-            sum_m[2] += wm * mq[0] * mq[0];
+            moments_mix.add(wm, mq[0], mq[1]);
             sum_w += wgt;
-            sum_wm += wm;
           }
         for (int c = 0; c < 3; ++c) color[c] = sum_c[c] / sum_w;
-        const double m_mean = sum_m[0] / sum_wm;
-        var = (sum_m[1] / sum_wm + std::max(0.0, sum_m[2] / sum_wm - m_mean * m_mean)) * (params.min_history / n);
+        var = moments_mix.mixture_variance() * (params.min_history / n);
       }
       for (int c = 0; c < 3; ++c) out.at(x, y, c) = clamp_fp16(color[c]);
       out.at(x, y, 3) = clamp_fp16(var);

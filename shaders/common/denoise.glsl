@@ -33,6 +33,13 @@ Moments blend_moments(Moments h, float l, float a) {
   const float d = l - h.mean;
   return Moments(h.mean + a * d, (1.0 - a) * (h.variance + a * d * d));
 }
+// A weighted mixture of distributions: sum w * mixture_term(m) over them, divide by the weights'
+// sum, and mixture_moments gives the mixture's mean and variance (the parts' mean variance plus
+// the spread of their means).
+vec3 mixture_term(Moments m) { return vec3(m.mean, m.variance, m.mean * m.mean); }
+Moments mixture_moments(vec3 mean_terms) {
+  return Moments(mean_terms.x, mean_terms.y + max(0.0, mean_terms.z - mean_terms.x * mean_terms.x));
+}
 
 // Lower bound on the depth tolerance, relative to depth: a plane facing the camera has a zero
 // gradient, and 0/0 must not happen.

@@ -31,7 +31,7 @@ vec4 estimate_color_variance(ivec2 p, Surface center) {
     vec3 ap = texelFetch(albedo, p, 0).rgb;
     float lp = luminance(ap * color);
     vec3 sum_c = vec3(0.0);
-    vec3 sum_m = vec3(0.0);  // sum w (mean, variance, mean^2): the mixture's moments
+    vec3 sum_m = vec3(0.0);  // the neighbours' mixture (common/denoise.glsl: mixture_term)
     float sum_w = 0.0, sum_wm = 0.0;
     for (int dy = -kVarianceRadius; dy <= kVarianceRadius; ++dy) {
       for (int dx = -kVarianceRadius; dx <= kVarianceRadius; ++dx) {
@@ -58,13 +58,12 @@ vec4 estimate_color_variance(ivec2 p, Surface center) {
         // cut exactly where it is large: a firefly (l >> sigma_l) would get variance 0 and survive
         // the a-trous untouched (glossy first frame: relMSE 0.30 against 0.028 at 192x192).
         float wm = n < 1.5 ? w_surface : w;
-        sum_m += wm * vec3(mq.mean, mq.variance, mq.mean * mq.mean);
+        sum_m += wm * mixture_term(mq);
         sum_wm += wm;
       }
     }
     color = sum_c / sum_w;
-    sum_m /= sum_wm;
-    variance = (sum_m.y + max(0.0, sum_m.z - sum_m.x * sum_m.x)) * (params.min_history / n);
+    variance = mixture_moments(sum_m / sum_wm).variance * (params.min_history / n);
   }
   return clamp_fp16(vec4(color, variance));
 }

@@ -61,9 +61,7 @@ struct History {
 // when inlined, and NVIDIA's OpenGL SPIR-V front end compiles loops as loops (docs/performance.md).
 History reproject(ivec2 p, Surface cur) {
   History h = History(vec3(0.0), Moments(0.0, 0.0), 0.0, false);
-  // The taps' mixture: sum w (mean, variance, mean^2); its variance is the taps' mean variance plus
-  // the spread of their means.
-  vec3 sum_m = vec3(0.0);
+  vec3 sum_m = vec3(0.0);  // the taps' mixture (common/denoise.glsl: mixture_term)
   vec4 mv = texelFetch(motion, p, 0);
   vec2 prev = vec2(p) + 0.5 + mv.xy;
 #ifdef VIRTUAL_MOTION
@@ -98,8 +96,7 @@ History reproject(ivec2 p, Surface cur) {
 #endif
         if (mq.z > 0.0 && consistent) {
           h.color += w * texelFetch(prev_color, q, 0).rgb;
-          const Moments mt = moments_from_stored(mq.xy);
-          sum_m += w * vec3(mt.mean, mt.variance, mt.mean * mt.mean);
+          sum_m += w * mixture_term(moments_from_stored(mq.xy));
           h.len += w * mq.z;
           sum_w += w;
         }
@@ -108,8 +105,7 @@ History reproject(ivec2 p, Surface cur) {
   }
   if (!(sum_w < 0.01)) {
     h.color /= sum_w;
-    sum_m /= sum_w;
-    h.moments = Moments(sum_m.x, sum_m.y + max(0.0, sum_m.z - sum_m.x * sum_m.x));
+    h.moments = mixture_moments(sum_m / sum_w);
     h.len /= sum_w;
     h.valid = true;
   } else {

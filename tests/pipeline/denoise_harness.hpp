@@ -236,34 +236,32 @@ struct Compare {
   int worst_x = -1, worst_y = -1, worst_c = -1;
   double got = 0, want = 0;
 };
+// The same with a tolerance per channel: tolerance(want, channel).
 inline Compare compare(const ImageD& got, const ImageD& want, int channels,
-                       const std::function<double(double)>& tolerance) {
+                       const std::function<double(double, int)>& tolerance) {
   Compare out;
   for (int y = 0; y < want.height; ++y)
     for (int x = 0; x < want.width; ++x)
       for (int c = 0; c < channels; ++c) {
         const double g = got.at(x, y, c), w = want.at(x, y, c);
         const double err = std::abs(g - w);
-        const double ratio = std::isfinite(g) ? err / tolerance(w) : 1e30;
+        const double ratio = std::isfinite(g) ? err / tolerance(w, c) : 1e30;
         if (ratio > out.worst_ratio) out = {ratio, err, x, y, c, g, w};
       }
   return out;
+}
+inline Compare compare(const ImageD& got, const ImageD& want, int channels,
+                       const std::function<double(double)>& tolerance) {
+  return compare(got, want, channels, [&tolerance](double w, int) { return tolerance(w); });
 }
 // Stored moments (E[l], sqrt(Var[l]), n; RGBA16F) against a reference's: the mean and n within one
 // fp16 store plus 1e-5 magnitude; the standard deviation within one fp16 store plus what a variance
 // error of 1e-5 variance_magnitude (fp32 arithmetic on values that large) makes of a square root.
 inline Compare compare_moments(const ImageD& got, const ImageD& want, double magnitude, double variance_magnitude) {
   const double dv = 1e-5 * variance_magnitude;
-  Compare out;
-  for (int y = 0; y < want.height; ++y)
-    for (int x = 0; x < want.width; ++x)
-      for (int c = 0; c < 3; ++c) {
-        const double g = got.at(x, y, c), w = want.at(x, y, c);
-        const double tolerance = fp16_ulp(w) + (c == 1 ? 2 * dv / (std::abs(w) + std::sqrt(dv)) : 1e-5 * magnitude);
-        const double ratio = std::isfinite(g) ? std::abs(g - w) / tolerance : 1e30;
-        if (ratio > out.worst_ratio) out = {ratio, std::abs(g - w), x, y, c, g, w};
-      }
-  return out;
+  return compare(got, want, 3, [=](double w, int c) {
+    return fp16_ulp(w) + (c == 1 ? 2 * dv / (std::abs(w) + std::sqrt(dv)) : 1e-5 * magnitude);
+  });
 }
 #define DENOISE_CHECK_CLOSE(result, what)                                                                          \
   CHECK_MESSAGE((result).worst_ratio <= 1.0, what << ": worst at (" << (result).worst_x << "," << (result).worst_y \
