@@ -20,8 +20,11 @@
 namespace asvgf::passes {
 
 struct GraphDenoiserInputs {
-  graph::ResourceId illumination = 0;  // read: RGBA32F demodulated radiance of this frame
-  graph::ResourceId motion = 0;        // read: RGBA32F, xy = previous minus current pixel position
+  // read: demodulated radiance of this frame, any float format with rgb (our renderer: RGBA16F,
+  // finite samples clamped to 65504; the temporal pass clamps there anyway)
+  graph::ResourceId illumination = 0;
+  // read: any float format with xy = previous minus current pixel position (our renderer: RGBA16F)
+  graph::ResourceId motion = 0;
   // read, and its history: persistent RGBA32F, the packed surface: x linear view depth, y its
   // gradient max(|dz/dx|, |dz/dy|), zw the octahedral-encoded unit normal (shaders/common/octahedral.glsl);
   // background where x is not finite, <= 0 or >= kBackgroundDepth (asvgf::is_background_depth).

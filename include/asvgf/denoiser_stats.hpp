@@ -14,7 +14,7 @@ struct PassTime {
   std::optional<double> gpu_ms;  // empty when the device has no timestamps
 };
 
-// Samples dropped (NaN, Inf) or clamped to the fp16 maximum before the histories, and output pixels
+// Samples dropped (NaN, Inf) or clamped to the fp16 maximum (or at it) before the histories, and output pixels
 // written as 0 because they were not finite.
 struct SanitisedCounts {
   std::uint32_t nan_samples = 0, inf_samples = 0, clamped_samples = 0, zeroed_outputs = 0;

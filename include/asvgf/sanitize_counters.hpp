@@ -10,9 +10,9 @@
 namespace asvgf::passes {
 
 // The buffer the temporal and composite passes count into: samples dropped with a NaN component,
-// with an infinite component (and no NaN), finite samples clamped to the fp16 maximum (65504)
-// before the histories, and output pixels written as 0 because their radiance was not finite.
-// Totals since creation.
+// with an infinite component (and no NaN), finite samples clamped to the fp16 maximum (65504;
+// one at it counts too: a half-float input holds no more) before the histories, and output pixels written as 0 because
+// their radiance was not finite. Totals since creation.
 class SanitizeCounters {
  public:
   static constexpr std::uint64_t kSize = 16;

@@ -221,7 +221,7 @@ History reproject(const TemporalInputs& in, const TemporalParams& params, int x,
 
 TemporalResult temporal(const TemporalInputs& in, const TemporalParams& params) {
   const int w = in.illumination->width, h = in.illumination->height;
-  TemporalResult out{ImageD(w, h, 4), ImageD(w, h, 4), 0, 0};
+  TemporalResult out{ImageD(w, h, 4), ImageD(w, h, 4), 0, 0, 0};
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const Surface cur = surface_at(*in.depth_normal, x, y);
@@ -241,6 +241,7 @@ TemporalResult temporal(const TemporalInputs& in, const TemporalParams& params) 
         var = hist.valid ? hist.variance : 0;
         n = hist.valid ? std::min(hist.len, params.history_cap) : 0;
       } else {
+        if (s[0] >= kFp16Max || s[1] >= kFp16Max || s[2] >= kFp16Max) ++out.clamped_samples;
         const double c3[3] = {clamp_sample(s[0]), clamp_sample(s[1]), clamp_sample(s[2])};
         const double l = luminance(c3[0], c3[1], c3[2]);
         if (hist.valid) {

@@ -68,6 +68,7 @@ struct TemporalResult {
   ImageD integrated;  // rgb, temporal variance
   ImageD moments;     // E[l], sqrt(Var[l]), n, 0 (common/denoise.glsl: Moments)
   std::uint32_t nan_samples = 0, inf_samples = 0;
+  std::uint32_t clamped_samples = 0;  // finite, a component at or above kFp16Max
 };
 // temporal.comp
 TemporalResult temporal(const TemporalInputs& in, const TemporalParams& params);

@@ -2,6 +2,7 @@
 
 #include "asvgf/graph_runtime.hpp"
 #include "shaders/export_aovs.hpp"
+#include "shaders/widen_image.hpp"
 
 namespace asvgf::passes {
 
@@ -16,6 +17,16 @@ graph::PassBuilder add_export_aovs(graph::RenderGraph& graph, PipelineCache& pip
                            {"depth_out", r.depth},
                            {"normal_out", r.normal},
                            {"albedo_out", r.albedo_out}},
+                          to_bytes(u), {u.width, u.height, 1});
+}
+
+graph::PassBuilder add_image_widen(graph::RenderGraph& graph, PipelineCache& pipelines, const std::string& name,
+                                   graph::ResourceId src, graph::ResourceId dst) {
+  using Uniforms = asvgf::shaders::widen_image_uniforms::Params;
+  const auto& decl = graph.resource(src);
+  const Uniforms u{decl.width, decl.height};
+  const hal::ShaderInfo& shader = asvgf::shaders::widen_image;
+  return add_compute_pass(graph, name, shader, pipelines.get<Uniforms>(shader), {{"source", src}, {"target", dst}},
                           to_bytes(u), {u.width, u.height, 1});
 }
 

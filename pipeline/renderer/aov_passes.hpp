@@ -1,6 +1,7 @@
 // renderer/aov_passes.hpp: the frame's denoiser inputs exported in the public API's conventions
 // (include/asvgf/denoiser.hpp), for `asvgf render --aovs`: an export pass for depth, normal and
-// albedo (shaders/renderer/export_aovs.comp) and plain copies for the rest.
+// albedo (shaders/renderer/export_aovs.comp), half-float images widened to RGBA32F
+// (shaders/renderer/widen_image.comp) and plain copies for the rest.
 #pragma once
 
 #include <string>
@@ -17,6 +18,10 @@ struct ExportAovResources {
 };
 // Adds "export_aovs".
 graph::PassBuilder add_export_aovs(graph::RenderGraph& graph, PipelineCache& pipelines, const ExportAovResources& r);
+
+// Adds a pass `name` writing float image `src` (any format) into the RGBA32F image `dst` of its size.
+graph::PassBuilder add_image_widen(graph::RenderGraph& graph, PipelineCache& pipelines, const std::string& name,
+                                   graph::ResourceId src, graph::ResourceId dst);
 
 // Adds a pass `name` copying image `src` into `dst` (same size and format).
 graph::PassBuilder add_image_copy(graph::RenderGraph& graph, const std::string& name, graph::ResourceId src,

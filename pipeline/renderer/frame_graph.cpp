@@ -77,9 +77,13 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const ResourceId vbuffer = g.add_image("visibility", w, h, F::RGBA32Uint, Lifetime::Persistent);
   const ResourceId depth_normal = g.add_image("depth_normal", w, h, F::RGBA32F, Lifetime::Persistent);
   const ResourceId seeds = g.add_image("rng_seed", w, h, F::R32Uint, Lifetime::Persistent);
-  const ResourceId illumination = g.add_image("illumination", w, h, F::RGBA32F, Lifetime::Persistent);
+  // The filtering methods' samples in half floats (pathtrace.comp: what the denoiser keeps of them);
+  // raw output and the reference unclamped.
+  const bool full_range = !method;
+  const ResourceId illumination =
+      g.add_image("illumination", w, h, full_range ? F::RGBA32F : F::RGBA16F, Lifetime::Persistent);
   // Transient.
-  const ResourceId motion = g.add_image("motion", w, h, F::RGBA32F);  // xy used
+  const ResourceId motion = g.add_image("motion", w, h, F::RGBA16F);  // xy used
   const ResourceId albedo = g.add_image("albedo", w, h, F::RGBA16F);
   // Two signals only where a second chain has something to filter and every consumer of the
   // illumination knows the split: the reprojected gradient and the AOVs read one signal.
@@ -110,7 +114,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
                                 gradients ? "" : not_moved);
   }
   passes::add_pathtrace(g, pipelines_, scene, vbuffer, gradients ? carried : std::nullopt, illumination, seeds, rays,
-                        {s.frame, s.seed, s.max_bounces, s.spp, s.demodulate}, w, h, "pathtrace",
+                        {s.frame, s.seed, s.max_bounces, s.spp, s.demodulate, full_range}, w, h, "pathtrace",
                         split ? std::optional(passes::SpecularTargets{*specular, *specular_albedo}) : std::nullopt);
   std::optional<ResourceId> specular_motion;
   if (split) {
@@ -155,8 +159,9 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
     passes::add_export_aovs(g, pipelines_,
                             {depth_normal, albedo, import("aov.depth", a.depth, w, h),
                              import("aov.normal", a.normal, w, h), import("aov.albedo", a.albedo, w, h)});
-    passes::add_image_copy(g, "aov_illumination", illumination, import("aov.illumination", a.illumination, w, h));
-    passes::add_image_copy(g, "aov_motion", motion, import("aov.motion", a.motion, w, h));
+    passes::add_image_widen(g, pipelines_, "aov_illumination", illumination,
+                            import("aov.illumination", a.illumination, w, h));
+    passes::add_image_widen(g, pipelines_, "aov_motion", motion, import("aov.motion", a.motion, w, h));
     if (gradients)
       passes::add_image_copy(g, "aov_gradient_samples", gradient_prev,
                              import("aov.gradient_samples", a.gradient_samples, gw, gh));

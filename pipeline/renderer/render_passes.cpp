@@ -1,6 +1,8 @@
 // The noisy-input passes: each fills its shader's generated uniform struct.
 #include "renderer/render_passes.hpp"
 
+#include "hal/error.hpp"
+
 #include "shaders/accumulate.hpp"
 #include "shaders/debug_view.hpp"
 #include "shaders/gbuffer.rayquery.hpp"
@@ -9,10 +11,12 @@
 #include "shaders/gradient_resolve.hpp"
 #include "shaders/gradient_select.hpp"
 #include "shaders/pathtrace.rayquery.hpp"
+#include "shaders/pathtrace.rayquery_full_range.hpp"
 #include "shaders/pathtrace.rayquery_gradients.hpp"
 #include "shaders/pathtrace.rayquery_gradients_split.hpp"
 #include "shaders/pathtrace.rayquery_split.hpp"
 #include "shaders/pathtrace.software.hpp"
+#include "shaders/pathtrace.software_full_range.hpp"
 #include "shaders/pathtrace.software_gradients.hpp"
 #include "shaders/pathtrace.software_gradients_split.hpp"
 #include "shaders/pathtrace.software_split.hpp"
@@ -109,7 +113,12 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
        {&shaders::pathtrace_software_gradients, &shaders::pathtrace_software_gradients_split}},
       {{&shaders::pathtrace_rayquery, &shaders::pathtrace_rayquery_split},
        {&shaders::pathtrace_rayquery_gradients, &shaders::pathtrace_rayquery_gradients_split}}};
-  const hal::ShaderInfo& shader = *variants[scene.ray_query ? 1 : 0][carried ? 1 : 0][specular ? 1 : 0];
+  if (s.full_range && (carried || specular))
+    throw hal::Error(hal::ErrorKind::InvalidUsage, name,
+                     "full-range (fp32) illumination is for unfiltered output: no gradient samples or split signals");
+  const hal::ShaderInfo& shader =
+      s.full_range ? (scene.ray_query ? shaders::pathtrace_rayquery_full_range : shaders::pathtrace_software_full_range)
+                   : *variants[scene.ray_query ? 1 : 0][carried ? 1 : 0][specular ? 1 : 0];
   const PathtraceParams params{uniform_camera<shaders::pathtrace_software_uniforms::Camera>(scene.camera),
                                width,
                                height,

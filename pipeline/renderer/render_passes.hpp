@@ -40,6 +40,10 @@ struct PathtraceSettings {
   std::uint32_t max_bounces = 4;  // path length after the primary hit
   std::uint32_t spp = 1;          // samples per pixel in this dispatch
   bool demodulate = true;         // false: illumination is radiance (no division by the albedo)
+  // The illumination's format: RGBA32F and unclamped (the methods that do not filter it: raw
+  // output, the accumulated reference), else RGBA16F with finite samples clamped to [0, 65504]
+  // (what the denoiser's temporal pass keeps of them anyway). Not with `carried` or `specular`.
+  bool full_range = false;
 };
 // What gradient_resolve writes for pathtrace, one entry a 3x3 stratum: the carried seed and surface
 // point (RGBA32Uint) and which pixel of the stratum gets them (gradient_prev, RGBA32F, .y: 0-8; -1,

@@ -21,4 +21,29 @@ bool any_nan(vec3 v) { return is_nan_bits(v.x) || is_nan_bits(v.y) || is_nan_bit
 vec3 clamp_sample(vec3 v) { return clamp(v, vec3(0.0), vec3(kFp16Max)); }
 vec4 clamp_fp16(vec4 v) { return clamp(v, vec4(-kFp16Max), vec4(kFp16Max)); }
 
+// x rounded to the nearest half float (ties to even), as a float that converts to it exactly. The
+// conversion an fp16 image store or packHalf2x16 does may round toward zero (Vulkan and GLSL leave
+// the mode to the implementation; NVIDIA's stores do): a history stored every frame then loses
+// about half an ulp a store, 1/alpha of it at steady state, a bias of some 0.1-0.2% of the energy
+// (docs/quality.md). NaN, Inf and magnitudes at or above kFp16Max pass unchanged (callers clamp).
+float round_to_half(float x) {
+  const float a = abs(x);
+  if (not_finite(x) || a >= kFp16Max) return x;
+  // Below 2^-14 halves are subnormal: multiples of 2^-24, exact in fp32.
+  if (a < 6.103515625e-05) return roundEven(x * 16777216.0) * 5.9604644775390625e-08;
+  const uint b = floatBitsToUint(x);
+  return uintBitsToFloat((b + 0xFFFu + ((b >> 13) & 1u)) & 0xFFFFE000u);
+}
+// The same for finite values below kFp16Max (the filters' clamped outputs) in four integer
+// operations a channel, for the a-trous iterations, whose time is their arithmetic: below 2^-14 it
+// rounds to 10 bits of the float's own exponent and leaves the subnormal half's last bit to the
+// conversion (an error below 2^-24).
+vec4 round_to_half_clamped(vec4 v) {
+  const uvec4 b = floatBitsToUint(v);
+  return uintBitsToFloat((b + 0xFFFu + ((b >> 13) & 1u)) & 0xFFFFE000u);
+}
+vec2 round_to_half(vec2 v) { return vec2(round_to_half(v.x), round_to_half(v.y)); }
+vec3 round_to_half(vec3 v) { return vec3(round_to_half(v.x), round_to_half(v.y), round_to_half(v.z)); }
+vec4 round_to_half(vec4 v) { return vec4(round_to_half(v.xy), round_to_half(v.zw)); }
+
 #endif

@@ -15,10 +15,14 @@
 #ifndef ASVGF_COMMON_FILTER_TEXEL_GLSL
 #define ASVGF_COMMON_FILTER_TEXEL_GLSL
 
-// Colour and variance as four halves: lossless for the RGBA16F values the filter carries (also the
-// first iteration's shared-memory tile).
+#include "common/color.glsl"
+
+// Colour and variance as four halves (finite, clamped to the fp16 range): lossless for the RGBA16F
+// values the filter carries.
 uvec2 pack_color_halves(vec4 color_variance) {
-  return uvec2(packHalf2x16(color_variance.rg), packHalf2x16(color_variance.ba));
+  // Rounded first: packHalf2x16's rounding, like a store's, is the implementation's (common/color.glsl).
+  const vec4 v = round_to_half_clamped(color_variance);
+  return uvec2(packHalf2x16(v.rg), packHalf2x16(v.ba));
 }
 vec4 unpack_color_halves(uvec2 u) { return vec4(unpackHalf2x16(u.x), unpackHalf2x16(u.y)); }
 

@@ -190,6 +190,7 @@ void filter_pixel(ivec2 p) {
     result = vec4(sum_c / sum_w, sum_v / (sum_w * sum_w));
   }
   result = clamp_fp16(result);
+  const vec4 stored = round_to_half_clamped(result);  // what every fp16 output below holds (common/color.glsl)
 #ifdef PACKED_OUT
   color_out.texels[p.y * int(params.width) + p.x] = pack_filter_texel(result, center.z, center.n);
 #ifdef FIRST_PACKED
@@ -198,10 +199,10 @@ void filter_pixel(ivec2 p) {
 #elif defined(COMPOSITE)
   composite_pixel(p, result.rgb);
 #else
-  imageStore(color_out, p, result);
+  imageStore(color_out, p, stored);
 #endif
 #ifdef HISTORY
-  imageStore(color_history, p, result);
+  imageStore(color_history, p, stored);
 #endif
 }
 

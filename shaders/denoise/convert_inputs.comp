@@ -50,7 +50,7 @@ void main() {
     m = a;
   }
   imageStore(illumination, p, vec4(c, 0.0));
-  imageStore(modulation, p, vec4(m, 1.0));
+  imageStore(modulation, p, vec4(round_to_half(m), 1.0));
   vec2 v = texelFetch(motion, p, 0).xy;
   imageStore(motion_out, p, vec4(vec2(params.motion_scale_x, params.motion_scale_y) * v, 0.0, 0.0));
 }

@@ -44,5 +44,5 @@ void main() {
       }
     }
   }
-  imageStore(gradient, s, vec4(result, 0.0, 0.0));
+  imageStore(gradient, s, vec4(round_to_half(result), 0.0, 0.0));
 }

@@ -77,5 +77,5 @@ void main() {
       }
     }
   }
-  imageStore(gradient_out, s, vec4(sum / weights, 0.0, 0.0));
+  imageStore(gradient_out, s, vec4(round_to_half(sum / weights), 0.0, 0.0));
 }

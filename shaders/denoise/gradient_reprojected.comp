@@ -63,7 +63,7 @@ void write_stratum(ivec2 local, ivec2 s) {
     sum_prev += v.y;
   }
   vec2 result = vec2(sum_cur - sum_prev, max(sum_cur, sum_prev));
-  imageStore(gradient, s, vec4(clamp(result, vec2(-kFp16Max), vec2(kFp16Max)), 0.0, 0.0));
+  imageStore(gradient, s, vec4(round_to_half(clamp(result, vec2(-kFp16Max), vec2(kFp16Max))), 0.0, 0.0));
 }
 
 // No return in main: one puts the barrier inside the loop construct that inlining makes of it.

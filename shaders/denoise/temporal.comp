@@ -1,7 +1,7 @@
 // temporal.comp: temporal accumulation of SVGF with A-SVGF's adaptive alpha.
 // - Sanitises the 1-spp sample: a NaN/+-Inf component drops the sample (treated as missing) and
 //   counts it in `counters` (SSBO atomics; image atomics are not portable); finite samples are
-//   clamped to [0, fp16 max], and those above it counted.
+//   clamped to [0, fp16 max], and those at or above it counted.
 // - Reprojects last frame's colour, moments and history length bilinearly through the motion
 //   vector, each of the 4 taps tested for depth and normal consistency; fails (history reset) when
 //   the valid taps' bilinear weight is below 0.01 (Falcor's SVGF).
@@ -145,7 +145,9 @@ void main() {
     m = h.valid ? h.moments : Moments(0.0, 0.0);
     n = h.valid ? min(h.len, params.history_cap) : 0.0;
   } else {
-    if (any(greaterThan(sample_rgb, vec3(kFp16Max)))) atomicAdd(counters.clamped_samples, 1u);
+    // At the maximum counts too: a half-float input holds no more, so such a sample was most likely
+    // clamped already (our renderer's path tracer clamps before it stores half floats).
+    if (any(greaterThanEqual(sample_rgb, vec3(kFp16Max)))) atomicAdd(counters.clamped_samples, 1u);
     vec3 c = clamp_sample(sample_rgb);
     float l = luminance(c);
     if (h.valid) {
@@ -161,6 +163,7 @@ void main() {
       n = 1.0;
     }
   }
-  imageStore(integrated, p, clamp_fp16(vec4(color, m.variance)));
-  imageStore(moments, p, vec4(moments_to_stored(m), n, 0.0));
+  // Rounded to the nearest half: a store rounding toward zero loses energy every frame (common/color.glsl).
+  imageStore(integrated, p, round_to_half(clamp_fp16(vec4(color, m.variance))));
+  imageStore(moments, p, round_to_half(vec4(moments_to_stored(m), n, 0.0)));
 }

@@ -33,5 +33,5 @@ layout(set = 0, binding = 5) uniform texture2D albedo;  // what the signal is re
 void main() {
   ivec2 p = invocation_pixel();
   if (!inside(p, params.width, params.height)) return;
-  imageStore(color_variance, p, estimate_color_variance(p, surface_from(texelFetch(depth_normal, p, 0))));
+  imageStore(color_variance, p, round_to_half(estimate_color_variance(p, surface_from(texelFetch(depth_normal, p, 0)))));
 }

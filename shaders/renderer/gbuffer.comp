@@ -28,7 +28,10 @@ Camera prev_cam;
 layout(set = 0, binding = 6, std430) readonly buffer PreviousTriangles { Triangle values[]; } previous_triangles;
 layout(set = 0, binding = 10, rgba32ui) writeonly uniform uimage2D visibility;
 layout(set = 0, binding = 11, rgba32f) writeonly uniform image2D depth_normal;
-layout(set = 0, binding = 12, rgba32f) writeonly uniform image2D motion;  // rgba: ESSL 310 has no rg formats
+// Half floats: 2^-11 of the motion (0.05 px at 100 px) is far below what the bilinear reprojection
+// resolves, and 8 bytes a pixel fewer written here and read by the temporal pass. rgba: ESSL 310 has
+// no rg formats.
+layout(set = 0, binding = 12, rgba16f) writeonly uniform image2D motion;
 layout(set = 0, binding = 13, rgba16f) writeonly uniform image2D albedo;
 
 // View depth where the ray through `pixel` meets the plane (point, normal); 0 if parallel.
@@ -92,11 +95,14 @@ void main() {
     prev_point = prev_cam.position.xyz + d;
   }
   vec3 prev = camera_project(prev_cam, prev_point, params.width, params.height);
-  vec2 mv = prev.z > 0.0 ? prev.xy - centre : vec2(-1e6);
-  if (at_infinity && prev.z <= 0.0) mv = vec2(-1e6);
+  // No previous position (behind last frame's camera): -kFp16Max, far outside any image, as is
+  // every motion the clamp shortens (a half float holds no more).
+  vec2 mv = prev.z > 0.0 ? clamp(prev.xy - centre, vec2(-kFp16Max), vec2(kFp16Max)) : vec2(-kFp16Max);
+  if (at_infinity && prev.z <= 0.0) mv = vec2(-kFp16Max);
 
   imageStore(visibility, p, vis);
   imageStore(depth_normal, p, dn);
-  imageStore(motion, p, vec4(mv, 0.0, 0.0));
-  imageStore(albedo, p, alb);
+  // Rounded to the nearest half: a store rounding toward zero would shorten every motion (common/color.glsl).
+  imageStore(motion, p, round_to_half_clamped(vec4(mv, 0.0, 0.0)));
+  imageStore(albedo, p, round_to_half_clamped(alb));
 }

@@ -41,7 +41,19 @@ layout(set = 0, binding = 0, std140) uniform Params {
 #include "common/sampling.glsl"
 
 layout(set = 0, binding = 10) uniform utexture2D visibility;
+// Half floats for the filtering methods: their temporal pass clamps every sample to the fp16
+// maximum anyway, so 8 bytes a pixel of the 16 written here and read by the denoiser carried
+// nothing it keeps; finite samples are clamped to [0, kFp16Max] on the way (a wider value would
+// turn into Inf), non-finite ones stay what they are, for the temporal pass to drop and count.
+// FULL_RANGE (raw output and the accumulated reference) keeps fp32: their radiance reaches the EXR
+// unclamped.
+#ifdef FULL_RANGE
 layout(set = 0, binding = 11, rgba32f) writeonly uniform image2D illumination;
+vec3 stored_sample(vec3 v) { return v; }
+#else
+layout(set = 0, binding = 11, rgba16f) writeonly uniform image2D illumination;
+vec3 stored_sample(vec3 v) { return any_not_finite(v) ? v : round_to_half_clamped(vec4(clamp_sample(v), 0.0)).rgb; }
+#endif
 layout(set = 0, binding = 12, r32ui) writeonly uniform uimage2D rng_seed;
 #ifdef GRADIENT_SAMPLES
 // One entry a 3x3 stratum (gradient_resolve): the carried seed and surface point, for the pixel
@@ -390,7 +402,7 @@ void shade_pixel(ivec2 p) {
     primary_surface(own_vis, t, b, n, v);
     split_demodulation_albedos(own_vis.y, b, dot(n, v), diffuse, own_specular_albedo);
   }
-  imageStore(specular_albedo, p, vec4(own_specular_albedo, 1.0));
+  imageStore(specular_albedo, p, round_to_half_clamped(vec4(own_specular_albedo, 1.0)));
   // Rounding can leave the difference a few ulps below 0 where the GGX lobe reflects everything. A
   // non-finite sample stays non-finite in both signals (max() could turn NaN into 0), so that each
   // chain's temporal pass drops it.
@@ -404,10 +416,10 @@ void shade_pixel(ivec2 p) {
   // The gradient passes read a non-finite sample's luminance as -1: missing.
   float one_signal_luminance = any_not_finite(one_signal) ? -1.0 : luminance(clamp_sample(one_signal));
   imageStore(illumination, p,
-             vec4(diffuse_radiance / max(diffuse_albedo, vec3(kAlbedoGuard)), one_signal_luminance));
+             vec4(stored_sample(diffuse_radiance / max(diffuse_albedo, vec3(kAlbedoGuard))), one_signal_luminance));
   imageStore(specular, p, vec4(specular_radiance / max(ggx_albedo, vec3(kAlbedoGuard)), first_specular_distance));
 #else
-  imageStore(illumination, p, vec4(one_signal, 0.0));
+  imageStore(illumination, p, vec4(stored_sample(one_signal), 0.0));
 #endif
 #ifdef GRADIENT_SAMPLES
   // A carried sample shaded last frame's point, not this pixel's visibility: seed 0 tells next

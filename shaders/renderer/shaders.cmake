@@ -2,9 +2,12 @@
 # in two variants: ray queries, and the software BVH for devices without them.
 asvgf_add_shader(gbuffer SOURCE renderer/gbuffer.comp
                  VARIANTS rayquery=TRACE_RAY_QUERY software=TRACE_SOFTWARE)
-# The _split variants write diffuse and specular signals apart (scenes with glossy materials).
+# The _split variants write diffuse and specular signals apart (scenes with glossy materials); the
+# _full_range ones write fp32 illumination, for the methods that do not filter it (raw, reference).
 asvgf_add_shader(pathtrace SOURCE renderer/pathtrace.comp
                  VARIANTS rayquery=TRACE_RAY_QUERY software=TRACE_SOFTWARE
+                          rayquery_full_range=TRACE_RAY_QUERY,FULL_RANGE
+                          software_full_range=TRACE_SOFTWARE,FULL_RANGE
                           rayquery_gradients=TRACE_RAY_QUERY,GRADIENT_SAMPLES
                           software_gradients=TRACE_SOFTWARE,GRADIENT_SAMPLES
                           rayquery_split=TRACE_RAY_QUERY,SPLIT_SPECULAR
@@ -20,3 +23,4 @@ asvgf_add_shader(specular_motion SOURCE renderer/specular_motion.comp)
 # Not a frame pass: the benchmark's bandwidth measurement.
 asvgf_add_shader(bandwidth_copy SOURCE renderer/bandwidth_copy.comp)
 asvgf_add_shader(export_aovs SOURCE renderer/export_aovs.comp)
+asvgf_add_shader(widen_image SOURCE renderer/widen_image.comp)

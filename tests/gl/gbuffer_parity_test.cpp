@@ -3,9 +3,12 @@
 // SPIRV-Cross's GLSL: the two front ends order and fuse arithmetic that is not `precise` (the
 // camera ray, t = depth / det, shading) differently, so 40-55% of the pixels differ in their last
 // bits (measured on llvmpipe, 48x40: depth 4.1e-6 relative, normal 3.0e-5, barycentrics 1.2e-6,
-// motion 1.1e-5 px, illumination 2.2e-5 relative at worst; one shared-edge tie in static on GL). Every difference must
-// be one of two kinds:
-//  - the same surface hit, every value within a few hundred float ulps of its magnitude;
+// motion 1.1e-5 px, illumination 2.2e-5 relative at worst; one shared-edge tie in static on GL). Motion
+// and illumination are stored as half floats, so such a last-bit difference can also round them to
+// neighbouring halves (one half step: 2^-10 of the value at most). Every difference must be one of
+// two kinds:
+//  - the same surface hit, every value within a few hundred float ulps of its magnitude (one half
+//    step for the half-float images);
 //  - a different triangle, where the pixel's ray passes through an edge both triangles share
 //    (both hits on an edge): the nearer-or-lower-index tie-break then depends on t's last bit.
 #include <doctest/doctest.h>
@@ -25,9 +28,10 @@ using namespace asvgf;
 namespace {
 
 // Bounds for "the same surface": an order of magnitude above what was measured, far below what a
-// wrong hit point, normal or bounce would give.
+// wrong hit point, normal or bounce would give; for the half-float motion and illumination, one
+// half step (2^-10 relative at most) above that.
 constexpr double kDepthRelative = 1e-4, kNormalAbsolute = 1e-4, kBaryAbsolute = 1e-5, kMotionPixels = 1e-4,
-                 kIlluminationRelative = 1e-4;
+                 kIlluminationRelative = 1e-4, kHalfStep = 0x1p-10;
 constexpr float kOnEdge = 1e-5f;  // smallest barycentric weight of a hit on an edge
 
 float as_float(std::uint32_t u) {
@@ -38,7 +42,8 @@ float as_float(std::uint32_t u) {
 
 struct Explained {
   int identical = 0, rounding = 0, shared_edge = 0, unexplained = 0;
-  double worst[5] = {};  // depth (relative), normal and depth gradient, barycentrics, motion, illumination (relative)
+  double worst[5] = {};  // depth (relative), normal and depth gradient, barycentrics, motion, illumination (relative;
+                         // these two beyond one half step)
 };
 
 double relative(double a, double b, double floor) {
@@ -76,9 +81,14 @@ Explained explain(const FrameInputs& got, const FrameInputs& expected) {
       d[1] = std::max(d[1], double(std::fabs(a.depth_normal[4 * p + c] - b.depth_normal[4 * p + c])));
     for (int c = 2; c < 4; ++c)
       d[2] = std::max(d[2], double(std::fabs(as_float(a.visibility[4 * p + c]) - as_float(b.visibility[4 * p + c]))));
-    for (int c = 0; c < 2; ++c) d[3] = std::max(d[3], double(std::fabs(a.motion[4 * p + c] - b.motion[4 * p + c])));
+    // Motion beyond one half step of its magnitude (in pixels).
+    for (int c = 0; c < 2; ++c) {
+      const double m = std::max(std::fabs(a.motion[4 * p + c]), std::fabs(b.motion[4 * p + c]));
+      d[3] =
+          std::max(d[3], std::max(0.0, double(std::fabs(a.motion[4 * p + c] - b.motion[4 * p + c])) - kHalfStep * m));
+    }
     for (int c = 0; c < 3; ++c)
-      d[4] = std::max(d[4], relative(a.illumination[4 * p + c], b.illumination[4 * p + c], 1e-3));
+      d[4] = std::max(d[4], relative(a.illumination[4 * p + c], b.illumination[4 * p + c], 1e-3) - kHalfStep);
     const bool same_albedo = std::memcmp(&a.albedo[4 * p], &b.albedo[4 * p], 8) == 0;
     if (same_albedo && d[0] <= kDepthRelative && d[1] <= kNormalAbsolute && d[2] <= kBaryAbsolute &&
         d[3] <= kMotionPixels && d[4] <= kIlluminationRelative)
@@ -110,9 +120,9 @@ TEST_CASE(
       const Explained e = explain(got, expected);
       MESSAGE(backend << " " << animation << ", " << w * h << " pixels: " << e.identical << " identical, " << e.rounding
                       << " rounding (worst: depth " << e.worst[0] << " relative, normal " << e.worst[1]
-                      << ", barycentrics " << e.worst[2] << ", motion " << e.worst[3] << " px, illumination "
-                      << e.worst[4] << " relative), " << e.shared_edge << " shared-edge ties, " << e.unexplained
-                      << " unexplained");
+                      << ", barycentrics " << e.worst[2] << ", beyond one half step: motion " << e.worst[3]
+                      << " px, illumination " << e.worst[4] << " relative), " << e.shared_edge << " shared-edge ties, "
+                      << e.unexplained << " unexplained");
       CHECK(e.unexplained == 0);
       CHECK(e.shared_edge <= static_cast<int>(w * h / 500));  // ties are rare: rays must hit an edge within an ulp
     }

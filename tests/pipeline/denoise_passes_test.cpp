@@ -361,7 +361,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "denoise passes: temporal pass matches the CPU reference (constant and adaptive alpha, dropped samples counted)") {
+    "denoise passes: temporal pass matches the CPU reference (constant and adaptive alpha, dropped and clamped samples "
+    "counted)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   for (const bool adaptive : {false, true}) {
@@ -370,7 +371,11 @@ TEST_CASE(
       CAPTURE(adaptive);
       CAPTURE(w);
       const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
-      const TemporalCase c = random_temporal_case(37u + static_cast<std::uint32_t>(w), w, h);
+      TemporalCase c = random_temporal_case(37u + static_cast<std::uint32_t>(w), w, h);
+      // Clamped and counted at and above the fp16 maximum (a half-float input's saturated samples), not below.
+      c.illumination.at(w - 1, h - 1, 0) = 65504;
+      c.illumination.at(w - 2, h - 1, 1) = 1e6;
+      c.illumination.at(w - 3, h - 1, 2) = 65503.98828125;  // the largest float below
       asvgf::DenoiseSettings settings;
       passes::SanitizeCounters counters(*device);
       GraphHarness harness(*device);
@@ -416,6 +421,8 @@ TEST_CASE(
       CHECK(counts.nan_samples == want.nan_samples);
       CHECK(counts.inf_samples == want.inf_samples);
       CHECK(want.nan_samples + want.inf_samples > 0);
+      CHECK(counts.clamped_samples == want.clamped_samples);
+      CHECK(want.clamped_samples >= 2);
       // The reference exercises both outcomes of reprojection.
       int reset = 0, kept = 0;
       for (int y = 0; y < h; ++y)

@@ -32,11 +32,11 @@ struct Expected {
 // Recorded on lavapipe (Mesa 25.0.7) with the commit that added this test; ray queries and the
 // software BVH give the same frames (frame_inputs_test), so one hash serves both.
 const Expected kExpected[] = {
-    {frame::Method::Raw, "raw", 0x289b28bc61dbac51ull},
-    {frame::Method::Ema, "ema", 0x9f2b8cddf7860f76ull},
-    {frame::Method::Svgf, "svgf", 0x4a27f757440e0b96ull},
-    {frame::Method::Asvgf, "asvgf", 0xd536b96379f09440ull},
-    {frame::Method::Reference, "reference", 0x2862c6a1cca5a248ull},
+    {frame::Method::Raw, "raw", 0x9e60626002f2596full},
+    {frame::Method::Ema, "ema", 0x6b98b6a41b19c82full},
+    {frame::Method::Svgf, "svgf", 0x694d2f372c406d86ull},
+    {frame::Method::Asvgf, "asvgf", 0x0d6caaa2458e5fb9ull},
+    {frame::Method::Reference, "reference", 0x3e41802295162b54ull},
 };
 
 }  // namespace

@@ -2,6 +2,7 @@
 // every image they write, for checks against analytic results.
 #pragma once
 
+#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -10,11 +11,19 @@
 #include "renderer/scene/scene.hpp"
 #include "renderer/scene_gpu.hpp"
 
+// A half float's value (subnormals included).
+inline float half_to_float(std::uint16_t h) {
+  const int e = (h >> 10) & 0x1f, m = h & 0x3ff;
+  const float v = e == 0 ? std::ldexp(float(m), -24) : std::ldexp(float(m | 0x400), e - 25);
+  return (h & 0x8000) ? -v : v;
+}
+
 struct FrameInputs {
   std::uint32_t width = 0, height = 0;
-  std::vector<std::uint32_t> visibility;                  // 4 per pixel
-  std::vector<float> depth_normal, motion, illumination;  // 4 per pixel
-  std::vector<std::uint16_t> albedo;                      // 4 fp16 per pixel
+  std::vector<std::uint32_t> visibility;  // 4 per pixel
+  // 4 per pixel; motion and illumination widened from the half floats the frame keeps them in
+  std::vector<float> depth_normal, motion, illumination;
+  std::vector<std::uint16_t> albedo;  // 4 fp16 per pixel
   // With `split`: pathtrace's second signal and its albedo; `illumination` and `albedo` are then
   // the diffuse ones.
   std::vector<float> specular, specular_motion;  // specular.a: the first specular ray's length
@@ -38,8 +47,8 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
     hal::ImageHandle image;
   };
   Target targets[] = {{"visibility", hal::Format::RGBA32Uint, {}},   {"depth_normal", hal::Format::RGBA32F, {}},
-                      {"motion", hal::Format::RGBA32F, {}},          {"albedo", hal::Format::RGBA16F, {}},
-                      {"illumination", hal::Format::RGBA32F, {}},    {"specular", hal::Format::RGBA32F, {}},
+                      {"motion", hal::Format::RGBA16F, {}},          {"albedo", hal::Format::RGBA16F, {}},
+                      {"illumination", hal::Format::RGBA16F, {}},    {"specular", hal::Format::RGBA32F, {}},
                       {"specular_albedo", hal::Format::RGBA16F, {}}, {"specular_motion", hal::Format::RGBA32F, {}}};
   for (auto& t : targets) t.image = device.create_image({t.name, width, height, t.format, usage});
   const auto ray_counter =
@@ -79,9 +88,15 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
   };
   read(0, out.visibility);
   read(1, out.depth_normal);
-  read(2, out.motion);
+  auto read_halves = [&](int target, std::vector<float>& values) {
+    std::vector<std::uint16_t> halves;
+    read(target, halves);
+    values.resize(n);
+    for (std::size_t i = 0; i < n; ++i) values[i] = half_to_float(halves[i]);
+  };
+  read_halves(2, out.motion);
   read(3, out.albedo);
-  read(4, out.illumination);
+  read_halves(4, out.illumination);
   if (split) {
     read(5, out.specular);
     read(6, out.specular_albedo);

@@ -1,0 +1,22 @@
+// widen_image.comp: copies a float image of any format into an RGBA32F one of the same size (what
+// a transfer copy cannot do between formats of different texel sizes), for `asvgf render --aovs`:
+// the half-float illumination and motion exported as the public API's RGBA32F.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_samplerless_texture_functions : require
+#include "common/compute.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform Params {
+  uint width;
+  uint height;
+} params;
+layout(set = 0, binding = 1) uniform texture2D source;
+layout(set = 0, binding = 2, rgba32f) writeonly uniform image2D target;
+
+void main() {
+  ivec2 p = invocation_pixel();
+  if (!inside(p, params.width, params.height)) return;
+  imageStore(target, p, texelFetch(source, p, 0));
+}
