@@ -35,7 +35,7 @@ float round_to_half(float x) {
   return uintBitsToFloat((b + 0xFFFu + ((b >> 13) & 1u)) & 0xFFFFE000u);
 }
 // The same for finite values below kFp16Max (the filters' clamped outputs) in four integer
-// operations a channel, for the a-trous iterations, whose time is their arithmetic: below 2^-14 it
+// operations a channel, for the passes whose time is their arithmetic: below 2^-14 it
 // rounds to 10 bits of the float's own exponent and leaves the subnormal half's last bit to the
 // conversion (an error below 2^-24).
 vec4 round_to_half_clamped(vec4 v) {

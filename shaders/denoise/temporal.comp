@@ -164,6 +164,7 @@ void main() {
     }
   }
   // Rounded to the nearest half: a store rounding toward zero loses energy every frame (common/color.glsl).
-  imageStore(integrated, p, round_to_half(clamp_fp16(vec4(color, m.variance))));
-  imageStore(moments, p, round_to_half(vec4(moments_to_stored(m), n, 0.0)));
+  // Finite and in the fp16 range (samples and histories are clamped): the integer form.
+  imageStore(integrated, p, round_to_half_clamped(clamp_fp16(vec4(color, m.variance))));
+  imageStore(moments, p, round_to_half_clamped(vec4(moments_to_stored(m), n, 0.0)));
 }

@@ -33,7 +33,7 @@ struct Expected {
 // software BVH give the same frames (frame_inputs_test), so one hash serves both.
 const Expected kExpected[] = {
     {frame::Method::Raw, "raw", 0x9e60626002f2596full},
-    {frame::Method::Ema, "ema", 0x6b98b6a41b19c82full},
+    {frame::Method::Ema, "ema", 0xa14f6011c2143061ull},
     {frame::Method::Svgf, "svgf", 0x694d2f372c406d86ull},
     {frame::Method::Asvgf, "asvgf", 0x0d6caaa2458e5fb9ull},
     {frame::Method::Reference, "reference", 0x3e41802295162b54ull},
