@@ -27,10 +27,12 @@ struct BenchOptions {
   float time_step = 1.0f;  // scene time per frame
 };
 
-// The passes that trace rays; every other pass of the frame is the denoiser's (the gradient chain
+// The passes that trace rays (pathtrace_carried: A-SVGF's re-shaded gradient samples, apart with
+// split signals; otherwise inside pathtrace); every
+// other pass of the frame is the denoiser's (the gradient chain and its sample selection
 // included), which the denoiser line sums.
 bool traces(const std::string& pass) {
-  return pass == "gbuffer" || pass == "pathtrace";
+  return pass == "gbuffer" || pass == "pathtrace" || pass == "pathtrace_carried";
 }
 
 struct Floor {
@@ -73,7 +75,7 @@ int run_bench(BenchOptions& o) {
       if (!pass_ms.count(t.pass)) order.push_back(t.pass);
       pass_ms[t.pass].push_back(*t.gpu_ms);
       total += *t.gpu_ms;
-      if (t.pass == "gbuffer" || t.pass == "pathtrace") tracing += *t.gpu_ms;
+      if (traces(t.pass)) tracing += *t.gpu_ms;
     }
     frame_ms.push_back(total);
     trace_ms.push_back(tracing);
@@ -111,7 +113,8 @@ int run_bench(BenchOptions& o) {
               moving < o.frames ? ": still frames skip the gradient passes; see --time-step" : "");
   row("denoiser", median(denoiser_ms), denoiser);
   std::printf(
-      "  (ms: medians; denoiser: every pass but gbuffer and pathtrace, summed per frame; MB moved: the\n"
+      "  (ms: medians; denoiser: every pass but the tracing ones (gbuffer, pathtrace, pathtrace_carried),\n"
+      "  summed per frame; MB moved: the\n"
       "  bytes each pass's declared images and buffers hold, read plus written, each once; B/pixel: the\n"
       "  same over the frame's pixels; + scene reads: the pass also traverses the scene, whose reads the\n"
       "  floor leaves out)\n");
@@ -121,7 +124,7 @@ int run_bench(BenchOptions& o) {
                 bandwidth->median_ms);
   std::printf("\nrays per frame:        %llu (primary + path continuation + shadow)\n",
               static_cast<unsigned long long>(renderer.rays_last_frame()));
-  std::printf("tracing time:          %.3f ms (gbuffer + pathtrace)\n", median(trace_ms));
+  std::printf("tracing time:          %.3f ms (gbuffer + pathtrace + pathtrace_carried)\n", median(trace_ms));
   std::printf("rays per second:       %.2f M\n", median(rays_per_s) * 1e-6);
   return 0;
 }

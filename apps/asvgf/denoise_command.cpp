@@ -2,9 +2,11 @@
 // manner of Intel Open Image Denoise's command line, plus depth, motion and A-SVGF's gradient
 // samples) through the public API (include/asvgf/denoiser.hpp), and writes every frame as EXR and
 // PNG; with --reference also metrics.csv. `asvgf render --aovs` writes exactly these buffers.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "asvgf/denoiser.hpp"
@@ -76,6 +78,28 @@ bool has_gradient_samples(const render::ExrImage& image) {
   for (std::size_t i = 1; i < image.rgba.size(); i += 4)
     if (image.rgba[i] >= 0.0f && image.rgba[i] < 9.0f) return true;
   return false;
+}
+
+// Whether a gradient file's samples carry this frame's re-shaded luminance in B (render --aovs
+// marks them with A = 1: DenoiserConfig::gradient_current_given), or leave it to the colour's pixel
+// (A 0 or absent: older files, RG samples). Nothing when no stratum holds a sample; refused when
+// the strata disagree.
+std::optional<bool> gradient_current_marked(const render::ExrImage& image, const std::string& what) {
+  const auto has = [&](const char* c) {
+    return std::find(image.channels.begin(), image.channels.end(), c) != image.channels.end();
+  };
+  const bool channels = has("B") && has("A");
+  std::optional<bool> marked;
+  for (std::size_t i = 1; i + 2 < image.rgba.size(); i += 4) {
+    if (!(image.rgba[i] >= 0.0f && image.rgba[i] < 9.0f)) continue;
+    const bool m = channels && image.rgba[i + 2] == 1.0f;
+    if (marked && *marked != m)
+      throw render::ImageIoError(what +
+                                 ": channel A marks some strata's B as this frame's luminance (1) and "
+                                 "not others: expected 1 on every stratum with a sample, or on none");
+    marked = m;
+  }
+  return marked;
 }
 
 int run_denoise(DenoiseOptions& o) {
@@ -153,6 +177,17 @@ int run_denoise(DenoiseOptions& o) {
                                        : DenoiseMethod::Asvgf;
   config.settings = o.device.denoise;
   config.depth_gradient_given = o.depth_gradient;
+  // The gradient files' convention, from the first that holds a sample (each frame's is checked).
+  for (int i = 0; i < frames && !gradient.empty(); ++i) {
+    const std::filesystem::path path = gradient.path(o.first + i);
+    if (!std::filesystem::exists(path)) continue;  // reported when its frame is read
+    const std::string what = path.string() + " (gradient, frame " + std::to_string(o.first + i) + ")";
+    if (const auto marked =
+            gradient_current_marked(read_frame(gradient, o.first + i, {"gradient", gw, gh, {"R", "G"}}), what)) {
+      config.gradient_current_given = *marked;
+      break;
+    }
+  }
   config.color_input = conventions.color;
   config.motion = conventions.motion;
   config.validate = o.validate;
@@ -250,6 +285,12 @@ int run_denoise(DenoiseOptions& o) {
     std::optional<DenoiserImage> samples;
     if (!gradient.empty()) {
       const render::ExrImage img = read_frame(gradient, f, {"gradient", gw, gh, {"R", "G"}});
+      const std::string what = gradient.path(f).string() + " (gradient, frame " + std::to_string(f) + ")";
+      const auto marked = gradient_current_marked(img, what);
+      if (marked && *marked != config.gradient_current_given)
+        throw render::ImageIoError(what + ": channel A " +
+                                   (*marked ? "marks B as this frame's luminance" : "does not mark B") +
+                                   ", unlike the sequence's first gradient samples");
       if (has_gradient_samples(img)) {
         device->upload_image(gradient_image, std::as_bytes(std::span(img.rgba)));
         samples = DenoiserImage{gradient_image, F32, hal::State::CopyDst};

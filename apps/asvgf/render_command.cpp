@@ -40,7 +40,9 @@ void write_aovs(const std::filesystem::path& dir, int frame, const render::AovIm
   render::write_exr(dir / frame_file("depth", frame, "exr"), w, h, a.depth);
   render::write_exr(dir / frame_file("motion", frame, "exr"), w, h, a.motion);
   if (!a.gradient_samples.empty())
-    render::write_exr(dir / frame_file("gradient", frame, "exr"), (w + 2) / 3, (h + 2) / 3, a.gradient_samples);
+    // A marks B as this frame's luminance of the re-shaded sample (asvgf denoise reads that convention).
+    render::write_exr(dir / frame_file("gradient", frame, "exr"), (w + 2) / 3, (h + 2) / 3, a.gradient_samples,
+                      /*alpha=*/true);
 }
 
 int run_render(RenderOptions& o) {

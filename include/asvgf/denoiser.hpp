@@ -34,9 +34,13 @@
 //   gradient_samples    A-SVGF only, ceil(w/3) x ceil(h/3): per 3x3 stratum, x = the luminance of
 //                       the previous frame's illumination at the sample, y = the sample's pixel in
 //                       the stratum (0..8, row-major: pixel 3*s + (i%3, i/3)), -1 = no sample. The
-//                       renderer must have shaded that pixel of `illumination` at last frame's surface
-//                       point, forward-projected into this frame, with last frame's random numbers
-//                       (Schied et al. 2018, section 4). A frame without gradient samples is treated
+//                       renderer re-shades the sample at last frame's surface point, forward-projected
+//                       into this frame, with last frame's random numbers (Schied et al. 2018,
+//                       section 4), either apart (recommended; DenoiserConfig::gradient_current_given):
+//                       z = its luminance, in x's units (negative or not finite: missing), and
+//                       every pixel of `illumination` is a fresh sample; or as that pixel of
+//                       `illumination` itself, which then repeats a sample its history already
+//                       holds (1 pixel in 9 gets nothing new). A frame without gradient samples is treated
 //                       as a frame where nothing moved (constant alpha). A renderer that cannot
 //                       re-shade sets settings.gradient_source = GradientSource::Reprojected: the
 //                       denoiser then estimates the gradient from this frame's noisy luminance
@@ -134,6 +138,9 @@ struct DenoiserConfig {
   DenoiseMethod method = DenoiseMethod::Asvgf;
   DenoiseSettings settings;
   bool depth_gradient_given = false;  // depth.y holds the depth gradient
+  // gradient_samples.z holds this frame's luminance of each re-shaded sample, shaded apart from
+  // `illumination` (see gradient_samples above).
+  bool gradient_current_given = false;
   ColorInput color_input = ColorInput::Radiance;
   MotionConvention motion;
   // Check every frame's inputs on the GPU against the conventions above (one extra pass that

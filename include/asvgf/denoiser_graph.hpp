@@ -35,14 +35,20 @@ struct GraphDenoiserInputs {
   graph::ResourceId counters = 0;  // SanitizeCounters::import of this graph
   graph::ResourceId hdr = 0;       // written by composite: RGBA32F linear radiance
   graph::ResourceId display = 0;   // written by composite: RGBA8 tonemapped sRGB
-  // A-SVGF with GradientSource::Reshaded: last frame's luminance forward-projected into this
-  // frame's 3x3 strata (ceil(w/3) x ceil(h/3), RGBA32F, xy used; gradient_select/gradient_resolve
-  // write it). Absent: constant alpha. With GradientSource::Reprojected the chain estimates the
-  // gradient itself (gradient_reprojected) and ignores this and the skip reason.
+  // A-SVGF with GradientSource::Reshaded: the gradient samples (asvgf/denoiser.hpp's table), one a
+  // 3x3 stratum (ceil(w/3) x ceil(h/3), RGBA32F): x last frame's luminance forward-projected into
+  // this frame, y the sample's pixel in the stratum (-1: none), and with gradient_current_given z
+  // this frame's luminance of the re-shaded sample. Absent: constant alpha. With
+  // GradientSource::Reprojected the chain estimates the gradient itself (gradient_reprojected) and
+  // ignores this and the skip reason.
   std::optional<graph::ResourceId> gradient_prev;
   // Not empty: the gradient passes are declared but left out for this reason (nothing moved), and
   // the temporal pass uses constant alpha this frame.
   std::string gradient_skip_reason;
+  // true: gradient_prev.z holds this frame's luminance of each re-shaded sample, shaded apart from
+  // `illumination` (our renderer's pathtrace_carried); false: the sample's pixel of `illumination`
+  // is the re-shaded sample.
+  bool gradient_current_given = false;
   // Two signals (pathtrace's SPLIT_SPECULAR, scenes with glossy materials): `illumination` is the
   // diffuse one, with the one-signal luminance in .a for the gradient, and `specular` (RGBA32F,
   // divided by `specular_albedo`, RGBA16F) gets a chain of its own: passes and histories named

@@ -74,7 +74,7 @@ ImageD pack_surface(const ImageD& depth, const ImageD& normal, bool depth_gradie
   return out;
 }
 
-ImageD gradient(const ImageD& illumination, const ImageD& gradient_prev) {
+ImageD gradient(const ImageD& illumination, const ImageD& gradient_prev, bool current_given) {
   const int w = illumination.width, h = illumination.height;
   ImageD out((w + 2) / 3, (h + 2) / 3, 4);
   for (int sy = 0; sy < out.height; ++sy)
@@ -84,9 +84,16 @@ ImageD gradient(const ImageD& illumination, const ImageD& gradient_prev) {
       const int index = static_cast<int>(index_f);
       const int x = 3 * sx + index % 3, y = 3 * sy + index / 3;
       if (!illumination.inside(x, y)) continue;
-      const double r = illumination.at(x, y, 0), g = illumination.at(x, y, 1), b = illumination.at(x, y, 2);
-      if (any_not_finite(r, g, b)) continue;
-      const double l_cur = luminance(clamp_sample(r), clamp_sample(g), clamp_sample(b));
+      double l_cur = 0;
+      if (current_given) {
+        l_cur = gradient_prev.at(sx, sy, 2);
+        if (!(l_cur >= 0) || !std::isfinite(l_cur)) continue;
+        l_cur = std::min(l_cur, kFp16Max);
+      } else {
+        const double r = illumination.at(x, y, 0), g = illumination.at(x, y, 1), b = illumination.at(x, y, 2);
+        if (any_not_finite(r, g, b)) continue;
+        l_cur = luminance(clamp_sample(r), clamp_sample(g), clamp_sample(b));
+      }
       const double l_prev = std::clamp(l_prev_raw, 0.0, kFp16Max);
       out.at(sx, sy, 0) = l_cur - l_prev;
       out.at(sx, sy, 1) = std::max(l_cur, l_prev);

@@ -26,8 +26,9 @@ struct ConvertedInputs {
 ConvertedInputs convert_inputs(const ImageD& color, const ImageD& albedo, const ImageD& motion, bool color_is_radiance,
                                double scale_x, double scale_y);
 
-// gradient.comp: (delta, Delta) per 3x3 stratum, ceil(w/3) x ceil(h/3).
-ImageD gradient(const ImageD& illumination, const ImageD& gradient_prev);
+// gradient.comp: (delta, Delta) per 3x3 stratum, ceil(w/3) x ceil(h/3); `current_given`: l_cur is
+// gradient_prev's third channel (the `given` variant), else the sample's pixel of `illumination`.
+ImageD gradient(const ImageD& illumination, const ImageD& gradient_prev, bool current_given = false);
 
 struct ReprojectedGradientInputs {
   const ImageD* illumination = nullptr;

@@ -37,27 +37,31 @@ void append_bytes(void* context, void* data, int size) {
 // The EXR file's bytes: RGB as 32-bit floats in B, G, R channel order (what viewers expect), ZIP
 // compressed but for images under 16x16 (as tinyexr's SaveEXR).
 std::vector<std::byte> encode_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h,
-                                  std::span<const float> rgba) {
+                                  std::span<const float> rgba, bool alpha) {
   const std::size_t pixels = std::size_t(w) * h;
-  std::vector<float> planes[3];
-  for (int c = 0; c < 3; ++c) {
+  const int count = alpha ? 4 : 3;
+  std::vector<float> planes[4];
+  for (int c = 0; c < count; ++c) {
     planes[c].resize(pixels);
     for (std::size_t p = 0; p < pixels; ++p) planes[c][p] = rgba[4 * p + std::size_t(c)];
   }
-  float* plane_pointers[3] = {planes[2].data(), planes[1].data(), planes[0].data()};  // B, G, R
+  // Channels in the order OpenEXR sorts their names: (A,) B, G, R.
+  float* plane_pointers[4] = {planes[3].data(), planes[2].data(), planes[1].data(), planes[0].data()};
+  const char* names = alpha ? "ABGR" : "BGR";
   EXRImage image;
   InitEXRImage(&image);
-  image.num_channels = 3;
-  image.images = reinterpret_cast<unsigned char**>(plane_pointers);
+  image.num_channels = count;
+  image.images = reinterpret_cast<unsigned char**>(plane_pointers + (alpha ? 0 : 1));
   image.width = static_cast<int>(w);
   image.height = static_cast<int>(h);
   EXRHeader header;
   InitEXRHeader(&header);
   header.compression_type = w < 16 && h < 16 ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_ZIP;
-  EXRChannelInfo channels[3] = {};
-  int pixel_types[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
-  for (int c = 0; c < 3; ++c) channels[c].name[0] = "BGR"[c];
-  header.num_channels = 3;
+  EXRChannelInfo channels[4] = {};
+  int pixel_types[4] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT,
+                        TINYEXR_PIXELTYPE_FLOAT};
+  for (int c = 0; c < count; ++c) channels[c].name[0] = names[c];
+  header.num_channels = count;
   header.channels = channels;
   header.pixel_types = pixel_types;
   header.requested_pixel_types = pixel_types;
@@ -86,7 +90,8 @@ void write_png(const std::filesystem::path& path, std::uint32_t w, std::uint32_t
   write_file_atomic(path, bytes);
 }
 
-void write_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h, std::span<const float> rgba) {
+void write_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h, std::span<const float> rgba,
+               bool alpha) {
   check_size(path, w, h, rgba.size());
   for (std::size_t i = 0; i < rgba.size(); ++i)
     if (!std::isfinite(rgba[i])) {
@@ -94,7 +99,7 @@ void write_exr(const std::filesystem::path& path, std::uint32_t w, std::uint32_t
       throw ImageIoError(path.string() + ": refusing to write a non-finite value at pixel (" +
                          std::to_string(pixel % w) + ", " + std::to_string(pixel / w) + ")");
     }
-  write_file_atomic(path, encode_exr(path, w, h, rgba));
+  write_file_atomic(path, encode_exr(path, w, h, rgba, alpha));
 }
 
 namespace {

@@ -20,11 +20,11 @@ class ImageIoError : public std::runtime_error {
 // rgba: width*height*4 bytes, rows top to bottom.
 void write_png(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
                std::span<const std::uint8_t> rgba);
-// rgba: width*height*4 floats; written as 32-bit floats (RGB; A dropped), so every finite radiance
-// is stored exactly (half floats turned values above 65504 into +Inf). Throws ImageIoError when a
-// value is NaN or infinite, naming the file and the first bad pixel.
+// rgba: width*height*4 floats; written as 32-bit floats (RGB, and A with `alpha`), so every finite
+// radiance is stored exactly (half floats turned values above 65504 into +Inf). Throws ImageIoError
+// when a value is NaN or infinite, naming the file and the first bad pixel.
 void write_exr(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
-               std::span<const float> rgba);
+               std::span<const float> rgba, bool alpha = false);
 
 struct ExrImage {
   std::uint32_t width = 0, height = 0;

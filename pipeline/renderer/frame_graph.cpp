@@ -103,19 +103,22 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   // Re-shaded samples only for GradientSource::Reshaded; Reprojected estimates inside add_denoiser.
   const bool reshaded = method && asvgf::reshades_gradients(*method, denoise);
   const bool gradients = reshades_gradients(s);
-  std::optional<passes::CarriedSamples> carried;
-  ResourceId gradient_prev = 0;
+  const passes::PathtraceSettings tracing{s.frame, s.seed, s.max_bounces, s.spp, s.demodulate, full_range};
+  std::optional<passes::CarriedSampleTargets> carried;
   if (reshaded) {
-    gradient_prev = g.add_image("gradient_prev_luminance", gw, gh, F::RGBA32F);  // xy used
-    carried = {g.add_image("gradient_seeds", gw, gh, F::RGBA32Uint), gradient_prev};
+    const passes::CarriedSamples resolved{g.add_image("gradient_seeds", gw, gh, F::RGBA32Uint),
+                                          g.add_image("gradient_prev_luminance", gw, gh, F::RGBA32F)};  // xy used
     const ResourceId claims = g.add_buffer("gradient_claims", std::uint64_t(gw) * gh * 4);
     passes::add_gradient_select(g, pipelines_, scene,
-                                {vbuffer, seeds, illumination, depth_normal, claims, *carried, split}, s.frame, w, h,
+                                {vbuffer, seeds, illumination, depth_normal, claims, resolved, split}, s.frame, w, h,
                                 gradients ? "" : not_moved);
+    // The carried samples traced apart from the pixels: every pixel keeps a fresh sample.
+    carried = {resolved, g.add_image("gradient_samples", gw, gh, F::RGBA32F), split, gradients ? "" : not_moved};
   }
-  passes::add_pathtrace(g, pipelines_, scene, vbuffer, gradients ? carried : std::nullopt, illumination, seeds, rays,
-                        {s.frame, s.seed, s.max_bounces, s.spp, s.demodulate, full_range}, w, h, "pathtrace",
-                        split ? std::optional(passes::SpecularTargets{*specular, *specular_albedo}) : std::nullopt);
+  passes::add_pathtrace(g, pipelines_, scene, vbuffer, illumination, seeds, rays, tracing, w, h, "pathtrace",
+                        split ? std::optional(passes::SpecularTargets{*specular, *specular_albedo}) : std::nullopt,
+                        carried);
+  const ResourceId gradient_samples = carried ? carried->gradient_samples : 0;
   std::optional<ResourceId> specular_motion;
   if (split) {
     specular_motion = g.add_image("specular_motion", w, h, F::RGBA32F);
@@ -130,7 +133,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const passes::GraphDenoiserOutputs denoised =
       passes::add_denoiser(g, pipelines_,
                            {input, motion, depth_normal, albedo, counters, hdr, display,
-                            reshaded ? std::optional(gradient_prev) : std::nullopt, gradients ? "" : not_moved,
+                            reshaded ? std::optional(gradient_samples) : std::nullopt, gradients ? "" : not_moved, true,
                             specular, specular_albedo, specular_motion},
                            denoise, method);
   g.output(hdr, hal::State::CopySrc);
@@ -163,7 +166,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
                             import("aov.illumination", a.illumination, w, h));
     passes::add_image_widen(g, pipelines_, "aov_motion", motion, import("aov.motion", a.motion, w, h));
     if (gradients)
-      passes::add_image_copy(g, "aov_gradient_samples", gradient_prev,
+      passes::add_image_copy(g, "aov_gradient_samples", gradient_samples,
                              import("aov.gradient_samples", a.gradient_samples, gw, gh));
   }
   return g;

@@ -11,14 +11,14 @@
 #include "shaders/gradient_resolve.hpp"
 #include "shaders/gradient_select.hpp"
 #include "shaders/pathtrace.rayquery.hpp"
+#include "shaders/pathtrace.rayquery_carried.hpp"
+#include "shaders/pathtrace.rayquery_carried_only.hpp"
 #include "shaders/pathtrace.rayquery_full_range.hpp"
-#include "shaders/pathtrace.rayquery_gradients.hpp"
-#include "shaders/pathtrace.rayquery_gradients_split.hpp"
 #include "shaders/pathtrace.rayquery_split.hpp"
 #include "shaders/pathtrace.software.hpp"
+#include "shaders/pathtrace.software_carried.hpp"
+#include "shaders/pathtrace.software_carried_only.hpp"
 #include "shaders/pathtrace.software_full_range.hpp"
-#include "shaders/pathtrace.software_gradients.hpp"
-#include "shaders/pathtrace.software_gradients_split.hpp"
 #include "shaders/pathtrace.software_split.hpp"
 #include "shaders/specular_motion.hpp"
 
@@ -102,43 +102,72 @@ void add_gbuffer(graph::RenderGraph& graph, PipelineCache& pipelines, const Scen
                    to_bytes(params), {width, height, 1});
 }
 
+PathtraceParams pathtrace_params(const SceneInputs& scene, const PathtraceSettings& s, std::uint32_t width,
+                                 std::uint32_t height, bool luminance_in_alpha) {
+  return {uniform_camera<shaders::pathtrace_software_uniforms::Camera>(scene.camera),
+          width,
+          height,
+          s.frame,
+          s.seed,
+          scene.light_count,
+          scene.sphere_count,
+          s.max_bounces,
+          s.spp,
+          s.demodulate ? 1u : 0u,
+          luminance_in_alpha ? 1u : 0u};
+}
+
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                   graph::ResourceId visibility, std::optional<CarriedSamples> carried, graph::ResourceId illumination,
-                   graph::ResourceId rng_seed, graph::ResourceId ray_counter, const PathtraceSettings& s,
-                   std::uint32_t width, std::uint32_t height, const std::string& name,
-                   std::optional<SpecularTargets> specular) {
-  // [ray query][gradient samples][split signals]
-  const hal::ShaderInfo* const variants[2][2][2] = {
-      {{&shaders::pathtrace_software, &shaders::pathtrace_software_split},
-       {&shaders::pathtrace_software_gradients, &shaders::pathtrace_software_gradients_split}},
-      {{&shaders::pathtrace_rayquery, &shaders::pathtrace_rayquery_split},
-       {&shaders::pathtrace_rayquery_gradients, &shaders::pathtrace_rayquery_gradients_split}}};
-  if (s.full_range && (carried || specular))
+                   graph::ResourceId visibility, graph::ResourceId illumination, graph::ResourceId rng_seed,
+                   graph::ResourceId ray_counter, const PathtraceSettings& s, std::uint32_t width, std::uint32_t height,
+                   const std::string& name, std::optional<SpecularTargets> specular,
+                   std::optional<CarriedSampleTargets> carried) {
+  if (s.full_range && (specular || carried))
     throw hal::Error(hal::ErrorKind::InvalidUsage, name,
-                     "full-range (fp32) illumination is for unfiltered output: no gradient samples or split signals");
+                     "full-range (fp32) illumination is for unfiltered output: no split signals or carried samples");
+  const bool rq = scene.ray_query;
+  const std::uint32_t strata_w = groups_for(width, 3), strata_h = groups_for(height, 3);
+  const bool carried_apart = carried && specular;  // the split variant has no storage image to spare
+  if (carried_apart) {
+    const hal::ShaderInfo& shader =
+        rq ? shaders::pathtrace_rayquery_carried_only : shaders::pathtrace_software_carried_only;
+    const PathtraceParams params = pathtrace_params(scene, s, width, height, carried->luminance_in_alpha);
+    auto bindings = scene_bindings(scene, shader);
+    bindings.insert(bindings.end(), {{"gradient_seeds", carried->carried.seeds},
+                                     {"gradient_prev", carried->carried.prev},
+                                     {"gradient_samples", carried->gradient_samples},
+                                     {"ray_counter", ray_counter}});
+    add_compute_pass(graph, name + "_carried", shader, pipelines.get<decltype(params)>(shader), std::move(bindings),
+                     to_bytes(params), {strata_w, strata_h, 1})
+        .skip_if(!carried->skip_reason.empty(), carried->skip_reason);
+  }
+  // Carried samples in the same dispatch where they are shaded at all this frame.
+  const bool merged = carried && !carried_apart && carried->skip_reason.empty();
   const hal::ShaderInfo& shader =
-      s.full_range ? (scene.ray_query ? shaders::pathtrace_rayquery_full_range : shaders::pathtrace_software_full_range)
-                   : *variants[scene.ray_query ? 1 : 0][carried ? 1 : 0][specular ? 1 : 0];
-  const PathtraceParams params{uniform_camera<shaders::pathtrace_software_uniforms::Camera>(scene.camera),
-                               width,
-                               height,
-                               s.frame,
-                               s.seed,
-                               scene.light_count,
-                               scene.sphere_count,
-                               s.max_bounces,
-                               s.spp,
-                               s.demodulate ? 1u : 0u};
+      s.full_range ? (rq ? shaders::pathtrace_rayquery_full_range : shaders::pathtrace_software_full_range)
+      : specular   ? (rq ? shaders::pathtrace_rayquery_split : shaders::pathtrace_software_split)
+      : merged     ? (rq ? shaders::pathtrace_rayquery_carried : shaders::pathtrace_software_carried)
+                   : (rq ? shaders::pathtrace_rayquery : shaders::pathtrace_software);
+  const PathtraceParams params = pathtrace_params(scene, s, width, height, merged && carried->luminance_in_alpha);
   auto bindings = scene_bindings(scene, shader);
   bindings.insert(bindings.end(), {{"visibility", visibility},
                                    {"illumination", illumination},
                                    {"rng_seed", rng_seed},
                                    {"ray_counter", ray_counter}});
-  if (carried) bindings.insert(bindings.end(), {{"gradient_seeds", carried->seeds}, {"gradient_prev", carried->prev}});
   if (specular)
     bindings.insert(bindings.end(), {{"specular", specular->signal}, {"specular_albedo", specular->albedo}});
+  std::uint32_t invocation_rows = height;
+  if (merged) {
+    bindings.insert(bindings.end(), {{"gradient_seeds", carried->carried.seeds},
+                                     {"gradient_prev", carried->carried.prev},
+                                     {"gradient_samples", carried->gradient_samples}});
+    // pathtrace.comp's layout: 8x8 workgroups; past the image's rows, one 8x8 tile of strata each.
+    const std::uint32_t groups_x = groups_for(width, 8);
+    const std::uint32_t tiles = groups_for(strata_w, 8) * groups_for(strata_h, 8);
+    invocation_rows = groups_for(height, 8) * 8 + groups_for(tiles, groups_x) * 8;
+  }
   add_compute_pass(graph, name, shader, pipelines.get<decltype(params)>(shader), std::move(bindings), to_bytes(params),
-                   {width, height, 1});
+                   {width, invocation_rows, 1});
 }
 
 void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,

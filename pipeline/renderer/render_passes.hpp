@@ -42,26 +42,39 @@ struct PathtraceSettings {
   bool demodulate = true;         // false: illumination is radiance (no division by the albedo)
   // The illumination's format: RGBA32F and unclamped (the methods that do not filter it: raw
   // output, the accumulated reference), else RGBA16F with finite samples clamped to [0, 65504]
-  // (what the denoiser's temporal pass keeps of them anyway). Not with `carried` or `specular`.
+  // (what the denoiser's temporal pass keeps of them anyway). Not with split signals or carried samples.
   bool full_range = false;
 };
-// What gradient_resolve writes for pathtrace, one entry a 3x3 stratum: the carried seed and surface
-// point (RGBA32Uint) and which pixel of the stratum gets them (gradient_prev, RGBA32F, .y: 0-8; -1,
-// gradient_clear's, where no sample landed).
+// What gradient_resolve writes for pathtrace_carried, one entry a 3x3 stratum: the carried seed and
+// surface point (RGBA32Uint) and which pixel of the stratum gets them (gradient_prev, RGBA32F, .x
+// last frame's luminance, .y: 0-8; -1, gradient_clear's, where no sample landed).
 struct CarriedSamples {
   graph::ResourceId seeds, prev;
 };
-// `carried` present: the A-SVGF variant that starts carried pixels from last frame's point.
+struct CarriedSampleTargets {
+  CarriedSamples carried;              // read: gradient_resolve's
+  graph::ResourceId gradient_samples;  // written: stratum-sized RGBA32F (l_prev, index, l_cur, 1; or 0 0)
+  bool luminance_in_alpha = false;     // illumination holds pathtrace's split signals
+  std::string skip_reason;             // not empty: nothing moved, no carried samples this frame
+};
+// Every pixel traces a fresh path of its own.
 // `specular` present: the split variant writes the specular signal (RGBA32F) and the GGX lobe's
 // albedo (RGBA16F) there, and the diffuse signal, with the one-signal luminance in .a, to
 // `illumination` (the gbuffer writes the diffuse albedo: GbufferTargets::diffuse_albedo_only).
+// `carried` present: A-SVGF's re-shading. Each stratum with a carried sample traces it from last
+// frame's surface point with last frame's seed and writes its luminance beside last frame's: the
+// gradient samples the denoiser reads with GraphDenoiserInputs::gradient_current_given. Shaded
+// apart from the pixel it lands in, whose own fresh sample goes into the histories; in the same
+// dispatch (one signal), or with split signals in a pass of its own, "<name>_carried" (left out,
+// with the skip reason, when there is one).
 // `ray_counter`: a buffer whose first uint the pass adds the rays it traced to (closest-hit and
 // shadow rays after the primary hit; the primary ray is the gbuffer's).
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                   graph::ResourceId visibility, std::optional<CarriedSamples> carried, graph::ResourceId illumination,
-                   graph::ResourceId rng_seed, graph::ResourceId ray_counter, const PathtraceSettings& settings,
-                   std::uint32_t width, std::uint32_t height, const std::string& name = "pathtrace",
-                   std::optional<SpecularTargets> specular = std::nullopt);
+                   graph::ResourceId visibility, graph::ResourceId illumination, graph::ResourceId rng_seed,
+                   graph::ResourceId ray_counter, const PathtraceSettings& settings, std::uint32_t width,
+                   std::uint32_t height, const std::string& name = "pathtrace",
+                   std::optional<SpecularTargets> specular = std::nullopt,
+                   std::optional<CarriedSampleTargets> carried = std::nullopt);
 
 struct GradientSelectTargets {
   graph::ResourceId visibility;     // persistent: last frame's version is read

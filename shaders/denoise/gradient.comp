@@ -1,8 +1,10 @@
 // gradient.comp: the temporal gradient of A-SVGF (Schied et al. 2018) at 1/3 resolution. Per 3x3
 // stratum with a forward-projected sample (gradient_prev.y = index 0..8 of the pixel in the
-// stratum, -1 = none): delta = l_cur - l_prev and Delta = max(l_cur, l_prev). Strata without a
-// usable sample write (0, 0): they add nothing to either sum of the gradient a-trous, so the ratio
-// |delta^|/Delta^ the temporal pass uses is the one of the samples that exist.
+// stratum, -1 = none): delta = l_cur - l_prev and Delta = max(l_cur, l_prev). l_cur is the
+// re-shaded sample's luminance: with CURRENT_GIVEN gradient_prev.z (the renderer shaded it apart;
+// negative or not finite: missing), else the luminance of the sample's pixel of `illumination`.
+// Strata without a usable sample write (0, 0): they add nothing to either sum of the gradient
+// a-trous, so the ratio |delta^|/Delta^ the temporal pass uses is the one of the samples that exist.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -21,24 +23,31 @@ layout(set = 0, binding = 0) uniform Params {
   uint pad1;
   uint pad2;
 } params;
+#ifndef CURRENT_GIVEN
 layout(set = 0, binding = 1) uniform texture2D illumination;
+#endif
 layout(set = 0, binding = 2) uniform texture2D gradient_prev;
 layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D gradient;
 
 void main() {
   ivec2 s = invocation_pixel();
   if (!inside(s, params.gradient_width, params.gradient_height)) return;
-  vec2 prev = texelFetch(gradient_prev, s, 0).xy;
+  vec4 prev = texelFetch(gradient_prev, s, 0);
   vec2 result = vec2(0.0);
   // l_prev < 0: last frame's sample was missing (luminance_in_alpha).
   if (prev.y >= 0.0 && prev.y < 9.0 && !not_finite(prev.x) && (params.luminance_in_alpha == 0u || prev.x >= 0.0)) {
     int index = int(prev.y);
     ivec2 p = 3 * s + ivec2(index % 3, index / 3);
     if (inside(p, params.width, params.height)) {
+#ifdef CURRENT_GIVEN
+      bool usable = prev.z >= 0.0 && !not_finite(prev.z);
+      float l_cur = min(prev.z, kFp16Max);
+#else
       vec4 c = texelFetch(illumination, p, 0);
       bool usable = params.luminance_in_alpha != 0u ? c.a >= 0.0 : !any_not_finite(c.rgb);
+      float l_cur = params.luminance_in_alpha != 0u ? c.a : luminance(clamp_sample(c.rgb));
+#endif
       if (usable) {
-        float l_cur = params.luminance_in_alpha != 0u ? c.a : luminance(clamp_sample(c.rgb));
         float l_prev = clamp(prev.x, 0.0, kFp16Max);
         result = vec2(l_cur - l_prev, max(l_cur, l_prev));
       }

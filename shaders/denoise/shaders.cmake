@@ -1,5 +1,7 @@
 # Denoiser passes (A-SVGF on SVGF); included by shaders/CMakeLists.txt.
-asvgf_add_shader(gradient SOURCE denoise/gradient.comp)
+# gradient: `in_illumination` reads the re-shaded sample's luminance from its pixel, `given` from the
+# gradient sample's z (DenoiserConfig::gradient_current_given).
+asvgf_add_shader(gradient SOURCE denoise/gradient.comp VARIANTS in_illumination given=CURRENT_GIVEN)
 asvgf_add_shader(gradient_atrous SOURCE denoise/gradient_atrous.comp VARIANTS plain first=GUIDE_OUT rest=GUIDE_IN)
 asvgf_add_shader(temporal SOURCE denoise/temporal.comp
                  VARIANTS constant adaptive=ADAPTIVE constant_virtual=VIRTUAL_MOTION adaptive_virtual=ADAPTIVE,VIRTUAL_MOTION)

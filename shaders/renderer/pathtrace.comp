@@ -1,9 +1,17 @@
 // pathtrace: 1 spp (or `spp` for references) of path tracing from the primary hit in the
 // visibility buffer: next-event estimation to sphere lights and emissive triangles combined with
 // BSDF sampling (cosine-weighted on Lambertian surfaces, common/bsdf.glsl's lobe mixture on glossy
-// ones) by multiple importance sampling (power heuristic), Russian roulette after two bounces. Writes demodulated illumination (radiance / demodulation_albedo,
-// guarded) and the random seed each pixel used. With GRADIENT_SAMPLES, pixels that gradient_select gave a
-// carried seed (gradient_resolve) start from last frame's surface point with last frame's seed instead.
+// ones) by multiple importance sampling (power heuristic), Russian roulette after two bounces. Writes
+// demodulated illumination (radiance / demodulation_albedo, guarded) and the random seed each pixel
+// used. Every pixel traces a fresh path of its own.
+// With CARRIED_SAMPLES (A-SVGF's re-shading) workgroups past the image's rows shade 3x3 strata: each
+// stratum that gradient_resolve gave a carried sample traces it from last frame's surface point
+// with last frame's seed, and writes its luminance beside last frame's into the gradient sample
+// (l_prev, index, l_cur, 1). Shading it apart keeps the landing pixel's own fresh sample for the
+// histories: the carried sample repeats one the history already holds (docs/quality.md,
+// camera-only path). In the same dispatch as the pixels, so that its paths fill the pixels' tail
+// instead of running as one short wave of their own (0.23 against 0.15 ms at 1080p on the H200).
+// CARRIED_ONLY shades the strata alone (split signals: their storage images are at WebGPU's limit).
 // With SPLIT_SPECULAR the radiance is written as two signals, as Q2RTX and NRD filter them: what
 // the primary surface's GGX lobe reflects (`specular`, divided by that lobe's directional albedo)
 // and the rest (`illumination`, divided by the diffuse albedo), with the luminance of the one-signal
@@ -31,42 +39,60 @@ layout(set = 0, binding = 0, std140) uniform Params {
   uint max_bounces;
   uint spp;
   uint demodulate;  // 0: leave the albedo in the signal (--no-demodulation)
+  // CARRIED_SAMPLES: 1 when the gradient's luminance is illumination.a's (split signals), 0 when it
+  // is the luminance of the stored rgb (what gradient_resolve read last frame).
+  uint luminance_in_alpha;
   uint pad0;        // WGSL rounds a uniform block up to 16 bytes: the C++ struct must be that size
   uint pad1;
-  uint pad2;
 } params;
 
 #include "renderer/scene_bindings.glsl"
 #include "common/random.glsl"
 #include "common/sampling.glsl"
 
+#ifndef CARRIED_ONLY
 layout(set = 0, binding = 10) uniform utexture2D visibility;
+#endif
 // Half floats for the filtering methods: their temporal pass clamps every sample to the fp16
 // maximum anyway, so 8 bytes a pixel of the 16 written here and read by the denoiser carried
 // nothing it keeps; finite samples are clamped to [0, kFp16Max] on the way (a wider value would
 // turn into Inf), non-finite ones stay what they are, for the temporal pass to drop and count.
+// Rounded to the nearest half exactly (subnormals too), so the store keeps them as they are: a
+// carried sample's luminance, computed here from the same values, then equals the one
+// gradient_resolve reads back from the image next frame.
 // FULL_RANGE (raw output and the accumulated reference) keeps fp32: their radiance reaches the EXR
 // unclamped.
 #ifdef FULL_RANGE
 layout(set = 0, binding = 11, rgba32f) writeonly uniform image2D illumination;
 vec3 stored_sample(vec3 v) { return v; }
 #else
+#ifndef CARRIED_ONLY
 layout(set = 0, binding = 11, rgba16f) writeonly uniform image2D illumination;
-vec3 stored_sample(vec3 v) { return any_not_finite(v) ? v : round_to_half_clamped(vec4(clamp_sample(v), 0.0)).rgb; }
 #endif
-layout(set = 0, binding = 12, r32ui) writeonly uniform uimage2D rng_seed;
-#ifdef GRADIENT_SAMPLES
+vec3 stored_sample(vec3 v) { return any_not_finite(v) ? v : round_to_half(clamp_sample(v)); }
+#endif
+// The luminance of a one-signal sample that the split signals store in illumination.a for the
+// gradient, as the image keeps it; -1: not finite (missing).
+float alpha_luminance(vec3 one_signal) {
+  return any_not_finite(one_signal) ? -1.0 : round_to_half(luminance(clamp_sample(one_signal)));
+}
+#ifdef CARRIED_SAMPLES
 // One entry a 3x3 stratum (gradient_resolve): the carried seed and surface point, for the pixel
 // that gradient_prev.y names (0-8; -1: none). Entries of strata without a sample are undefined.
 layout(set = 0, binding = 13) uniform utexture2D gradient_seeds;
 layout(set = 0, binding = 17) uniform texture2D gradient_prev;
+// The gradient samples the denoiser reads (DenoiserConfig::gradient_current_given).
+layout(set = 0, binding = 18, rgba32f) writeonly uniform image2D gradient_samples;
+#endif
+#ifndef CARRIED_ONLY
+layout(set = 0, binding = 12, r32ui) writeonly uniform uimage2D rng_seed;
 #endif
 // Rays traced this frame (closest and shadow), for the rays-per-second benchmark.
 layout(set = 0, binding = 14, std430) buffer RayCounter { uint count; } ray_counter;
 #ifdef SPLIT_SPECULAR
 layout(set = 0, binding = 15, rgba32f) writeonly uniform image2D specular;
-// The GGX lobe's albedo of the pixel's own surface (carried gradient samples shade another point;
-// 0 without a surface or a GGX lobe, so that specular light the filters spread there stays dark),
+// The GGX lobe's albedo of the pixel's surface (0 without a surface or a GGX lobe, so that
+// specular light the filters spread there stays dark),
 // what composite re-modulates the filtered specular signal by; here and not in the gbuffer, whose
 // storage images are at WebGPU's limit of 4.
 layout(set = 0, binding = 16, rgba16f) writeonly uniform image2D specular_albedo;
@@ -342,29 +368,24 @@ void primary_surface(uvec4 vis, out Triangle t, out vec2 b, out vec3 n, out vec3
   v = normalize(cam.position.xyz - x);
 }
 
-void shade_pixel(ivec2 p) {
-  LOAD_CAMERA(cam, params.camera);
-  uvec4 vis = texelFetch(visibility, p, 0);
-  const uvec4 own_vis = vis;
-  uint seed = pixel_seed(uvec2(p), params.width, params.frame, params.seed);
-#ifdef GRADIENT_SAMPLES
-  const ivec2 stratum = p / 3;
-  const bool carried_sample = texelFetch(gradient_prev, stratum, 0).y == float(p.x % 3 + 3 * (p.y % 3));
-  if (carried_sample) {
-    // Last frame's sample, forward-projected here: same surface point, same random numbers.
-    const uvec4 carried = texelFetch(gradient_seeds, stratum, 0);
-    seed = carried.x;
-    Triangle t = load_triangle(carried.y);
-    vis = uvec4(t.instance + 1u, carried.y, carried.z, carried.w);
-  }
-#endif
-  vec3 radiance = vec3(0.0);
-  vec3 demodulation = vec3(1.0);
-  vec3 specular_radiance = vec3(0.0);
-  vec3 diffuse_albedo = vec3(1.0);
-  vec3 ggx_albedo = vec3(1.0);
+// What `spp` paths from a primary surface (a visibility texel) give.
+struct Shaded {
+  vec3 radiance;           // towards the camera, averaged over the paths
+  vec3 specular_radiance;  // the part of it the first vertex's GGX lobe reflected
+  vec3 demodulation;       // what the one signal is divided by (1 without demodulation)
+  vec3 diffuse_albedo;     // SPLIT_SPECULAR: what each of the two signals is divided by
+  vec3 ggx_albedo;
+};
+
+Shaded shade(uvec4 vis, uint seed) {
+  Shaded r;
+  r.radiance = vec3(0.0);
+  r.specular_radiance = vec3(0.0);
+  r.demodulation = vec3(1.0);
+  r.diffuse_albedo = vec3(1.0);
+  r.ggx_albedo = vec3(1.0);
   if (vis.x == 0xFFFFFFFFu) {
-    radiance = lights.values[vis.y].emission;  // a sphere light seen directly
+    r.radiance = lights.values[vis.y].emission;  // a sphere light seen directly
   } else if (vis.x != 0u) {
     Triangle t;
     vec2 b;
@@ -372,61 +393,145 @@ void shade_pixel(ivec2 p) {
     primary_surface(vis, t, b, n, v);
     vec3 albedo = surface_albedo(vis.y, b);
     if (params.demodulate != 0u) {
-      demodulation = demodulation_albedo(vis.y, b, dot(n, v));
+      r.demodulation = demodulation_albedo(vis.y, b, dot(n, v));
 #ifdef SPLIT_SPECULAR
-      split_demodulation_albedos(vis.y, b, dot(n, v), diffuse_albedo, ggx_albedo);
+      split_demodulation_albedos(vis.y, b, dot(n, v), r.diffuse_albedo, r.ggx_albedo);
 #endif
     }
     vec3 emission = materials.values[t.material].emission.rgb;
     for (uint s = 0u; s < params.spp; ++s) {
       uint state = s == 0u ? seed : pcg_hash(seed + s);
       vec3 path_specular;
-      radiance += trace_path(vis.y, b, n, v, albedo, emission, state, path_specular);
-      specular_radiance += path_specular;
+      r.radiance += trace_path(vis.y, b, n, v, albedo, emission, state, path_specular);
+      r.specular_radiance += path_specular;
     }
-    radiance /= float(max(params.spp, 1u));
-    specular_radiance /= float(max(params.spp, 1u));
+    r.radiance /= float(max(params.spp, 1u));
+    r.specular_radiance /= float(max(params.spp, 1u));
   }
-  vec3 one_signal = radiance / max(demodulation, vec3(kAlbedoGuard));
+  return r;
+}
+
+vec3 one_signal(Shaded s) { return s.radiance / max(s.demodulation, vec3(kAlbedoGuard)); }
+
+// What an invocation shades: a pixel, with its visibility and seed, or a stratum's carried sample,
+// with last frame's surface point and seed. One call of shade() serves both: each inlined call
+// site is a copy of the whole path tracer, which NVIDIA's OpenGL compiles into a program twice as
+// slow (docs/performance.md).
+struct Work {
+  bool pending;  // something to shade
+  bool carried;
+  ivec2 at;  // the pixel, or the stratum
+  uvec4 vis;
+  uint seed;
+  vec2 prev;  // carried: gradient_prev.xy (last frame's luminance, the pixel in the stratum)
+};
+
+#ifdef CARRIED_SAMPLES
+// A stratum's carried sample, if it has one; a stratum without one gets its "none" entry here.
+Work carried_work(ivec2 stratum) {
+  Work w;
+  w.pending = false;
+  w.carried = true;
+  w.at = stratum;
+  w.vis = uvec4(0u);
+  w.seed = 0u;
+  const vec4 prev = texelFetch(gradient_prev, stratum, 0);
+  w.prev = prev.xy;
+  if (prev.y >= 0.0 && prev.y < 9.0) {
+    // Last frame's sample, forward-projected here: same surface point, same random numbers.
+    const uvec4 carried = texelFetch(gradient_seeds, stratum, 0);
+    w.vis = uvec4(load_triangle(carried.y).instance + 1u, carried.y, carried.z, carried.w);
+    w.seed = carried.x;
+    w.pending = true;
+  } else {
+    imageStore(gradient_samples, stratum, vec4(prev.xy, 0.0, 0.0));
+  }
+  return w;
+}
+
+void store_carried(Work w, Shaded shaded) {
+  const vec3 one = one_signal(shaded);
+  // The luminance as gradient_resolve reads last frame's back from the illumination image.
+  float l = params.luminance_in_alpha != 0u ? alpha_luminance(one)
+            : any_not_finite(one)           ? -1.0
+                                            : luminance(stored_sample(one));
+  imageStore(gradient_samples, w.at, vec4(w.prev, l, 1.0));
+}
+#endif
+
+#ifndef CARRIED_ONLY
+Work pixel_work(ivec2 p) {
+  Work w;
+  w.pending = p.x < int(params.width) && p.y < int(params.height);
+  w.carried = false;
+  w.at = p;
+  w.vis = w.pending ? texelFetch(visibility, p, 0) : uvec4(0u);
+  w.seed = pixel_seed(uvec2(p), params.width, params.frame, params.seed);
+  w.prev = vec2(0.0);
+  return w;
+}
+
+void store_pixel(Work w, Shaded shaded) {
+  const ivec2 p = w.at;
+  const vec3 one = one_signal(shaded);
 #ifdef SPLIT_SPECULAR
-  // What composite re-modulates by: the GGX albedo of the pixel's own surface (a carried gradient
-  // sample shaded another point), 0 without a surface (specular light the filters spread there
-  // stays dark), 1 without demodulation (the signal is radiance).
-  vec3 own_specular_albedo = ggx_albedo;
-  if (own_vis.x == 0u || own_vis.x == 0xFFFFFFFFu) {
-    own_specular_albedo = vec3(params.demodulate != 0u ? 0.0 : 1.0);
-  } else if (own_vis != vis && params.demodulate != 0u) {
-    Triangle t;
-    vec2 b;
-    vec3 n, v, diffuse;
-    primary_surface(own_vis, t, b, n, v);
-    split_demodulation_albedos(own_vis.y, b, dot(n, v), diffuse, own_specular_albedo);
-  }
-  imageStore(specular_albedo, p, round_to_half_clamped(vec4(own_specular_albedo, 1.0)));
+  // What composite re-modulates by: the GGX albedo of the pixel's surface, 0 without a surface
+  // (specular light the filters spread there stays dark), 1 without demodulation (the signal is
+  // radiance).
+  vec3 specular_albedo_out = shaded.ggx_albedo;
+  if (w.vis.x == 0u || w.vis.x == 0xFFFFFFFFu) specular_albedo_out = vec3(params.demodulate != 0u ? 0.0 : 1.0);
+  imageStore(specular_albedo, p, round_to_half_clamped(vec4(specular_albedo_out, 1.0)));
   // Rounding can leave the difference a few ulps below 0 where the GGX lobe reflects everything. A
   // non-finite sample stays non-finite in both signals (max() could turn NaN into 0), so that each
   // chain's temporal pass drops it.
-  vec3 diffuse_radiance = radiance - specular_radiance;
-  if (any_not_finite(radiance) || any_not_finite(specular_radiance)) {
-    diffuse_radiance = radiance;
-    specular_radiance = radiance;
+  vec3 specular_radiance = shaded.specular_radiance;
+  vec3 diffuse_radiance = shaded.radiance - specular_radiance;
+  if (any_not_finite(shaded.radiance) || any_not_finite(specular_radiance)) {
+    diffuse_radiance = shaded.radiance;
+    specular_radiance = shaded.radiance;
   } else {
     diffuse_radiance = max(diffuse_radiance, vec3(0.0));
   }
   // The gradient passes read a non-finite sample's luminance as -1: missing.
-  float one_signal_luminance = any_not_finite(one_signal) ? -1.0 : luminance(clamp_sample(one_signal));
   imageStore(illumination, p,
-             vec4(stored_sample(diffuse_radiance / max(diffuse_albedo, vec3(kAlbedoGuard))), one_signal_luminance));
-  imageStore(specular, p, vec4(specular_radiance / max(ggx_albedo, vec3(kAlbedoGuard)), first_specular_distance));
+             vec4(stored_sample(diffuse_radiance / max(shaded.diffuse_albedo, vec3(kAlbedoGuard))),
+                  alpha_luminance(one)));
+  imageStore(specular, p,
+             vec4(specular_radiance / max(shaded.ggx_albedo, vec3(kAlbedoGuard)), first_specular_distance));
 #else
-  imageStore(illumination, p, vec4(stored_sample(one_signal), 0.0));
+  imageStore(illumination, p, vec4(stored_sample(one), 0.0));
 #endif
-#ifdef GRADIENT_SAMPLES
-  // A carried sample shaded last frame's point, not this pixel's visibility: seed 0 tells next
-  // frame's forward projection not to pick the pixel (its seed and visibility do not match).
-  if (carried_sample) seed = 0u;
+  imageStore(rng_seed, p, uvec4(w.seed));
+}
 #endif
-  imageStore(rng_seed, p, uvec4(seed));
+
+// The invocation's work (pathtrace.cpp's dispatch: 8x8 workgroups).
+Work find_work() {
+  const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+#ifdef CARRIED_SAMPLES
+  const uvec2 strata = (uvec2(params.width, params.height) + 2u) / 3u;
+#ifdef CARRIED_ONLY
+  if (all(lessThan(uvec2(p), strata))) return carried_work(p);
+#else
+  // The workgroups past the image's rows, in order, take 8x8 tiles of strata row by row.
+  const uint pixel_group_rows = (params.height + 7u) / 8u;
+  if (gl_WorkGroupID.y < pixel_group_rows) return pixel_work(p);
+  const uint tile = (gl_WorkGroupID.y - pixel_group_rows) * ((params.width + 7u) / 8u) + gl_WorkGroupID.x;
+  const uint tiles_x = (strata.x + 7u) / 8u;
+  const uvec2 s = uvec2(tile % tiles_x, tile / tiles_x) * 8u + gl_LocalInvocationID.xy;
+  if (all(lessThan(s, strata))) return carried_work(ivec2(s));
+#endif
+  Work none;
+  none.pending = false;
+  none.carried = true;
+  none.at = p;
+  none.vis = uvec4(0u);
+  none.seed = 0u;
+  none.prev = vec2(0.0);
+  return none;
+#else
+  return pixel_work(p);
+#endif
 }
 
 // The workgroup's rays, added to the global counter by one invocation: one atomic per pixel on a
@@ -437,8 +542,21 @@ void main() {
   if (gl_LocalInvocationIndex == 0u) group_rays = 0u;
   memoryBarrierShared();
   barrier();
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (p.x < int(params.width) && p.y < int(params.height)) shade_pixel(p);
+  LOAD_CAMERA(cam, params.camera);
+  const Work work = find_work();
+  if (work.pending) {
+    const Shaded shaded = shade(work.vis, work.seed);
+#if defined(CARRIED_SAMPLES) && defined(CARRIED_ONLY)
+    store_carried(work, shaded);
+#elif defined(CARRIED_SAMPLES)
+    if (work.carried)
+      store_carried(work, shaded);
+    else
+      store_pixel(work, shaded);
+#else
+    store_pixel(work, shaded);
+#endif
+  }
   if (rays_traced > 0u) atomicAdd(group_rays, rays_traced);
   memoryBarrierShared();
   barrier();

@@ -3,17 +3,19 @@
 asvgf_add_shader(gbuffer SOURCE renderer/gbuffer.comp
                  VARIANTS rayquery=TRACE_RAY_QUERY software=TRACE_SOFTWARE)
 # The _split variants write diffuse and specular signals apart (scenes with glossy materials); the
-# _full_range ones write fp32 illumination, for the methods that do not filter it (raw, reference).
+# _full_range ones write fp32 illumination, for the methods that do not filter it (raw, reference);
+# the _carried ones also shade A-SVGF's carried gradient samples (one invocation a 3x3 stratum,
+# in workgroups past the image's rows), the _carried_only ones only those (beside the split ones).
 asvgf_add_shader(pathtrace SOURCE renderer/pathtrace.comp
                  VARIANTS rayquery=TRACE_RAY_QUERY software=TRACE_SOFTWARE
                           rayquery_full_range=TRACE_RAY_QUERY,FULL_RANGE
                           software_full_range=TRACE_SOFTWARE,FULL_RANGE
-                          rayquery_gradients=TRACE_RAY_QUERY,GRADIENT_SAMPLES
-                          software_gradients=TRACE_SOFTWARE,GRADIENT_SAMPLES
                           rayquery_split=TRACE_RAY_QUERY,SPLIT_SPECULAR
                           software_split=TRACE_SOFTWARE,SPLIT_SPECULAR
-                          rayquery_gradients_split=TRACE_RAY_QUERY,GRADIENT_SAMPLES,SPLIT_SPECULAR
-                          software_gradients_split=TRACE_SOFTWARE,GRADIENT_SAMPLES,SPLIT_SPECULAR)
+                          rayquery_carried=TRACE_RAY_QUERY,CARRIED_SAMPLES
+                          software_carried=TRACE_SOFTWARE,CARRIED_SAMPLES
+                          rayquery_carried_only=TRACE_RAY_QUERY,CARRIED_SAMPLES,CARRIED_ONLY
+                          software_carried_only=TRACE_SOFTWARE,CARRIED_SAMPLES,CARRIED_ONLY)
 asvgf_add_shader(gradient_clear SOURCE renderer/gradient_clear.comp)
 asvgf_add_shader(gradient_select SOURCE renderer/gradient_select.comp)
 asvgf_add_shader(gradient_resolve SOURCE renderer/gradient_resolve.comp)

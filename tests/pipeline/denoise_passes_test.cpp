@@ -171,40 +171,57 @@ TEST_CASE("denoise passes: pack_surface matches the CPU reference; bad depths an
     }
 }
 
-TEST_CASE("denoise passes: gradient pass matches the CPU reference") {
+// Both ways a renderer hands over the re-shaded sample: as its pixel of the illumination, or as the
+// gradient sample's z (current_given), where the pixel's own sample must not be read.
+TEST_CASE("denoise passes: gradient pass matches the CPU reference, l_cur from the pixel or from the sample") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
-  for (const auto& size : kSizes) {
-    const int w = size[0], h = size[1], gw = (w + 2) / 3, gh = (h + 2) / 3;
-    CAPTURE(w);
-    CAPTURE(h);
-    Random r(11u + static_cast<std::uint32_t>(w));
-    ImageD illumination = random_color(r, w, h, 0, 4, 0);
-    illumination.at(1, 1, 0) = std::numeric_limits<double>::quiet_NaN();  // a dropped sample
-    illumination.at(2, 0, 1) = std::numeric_limits<double>::infinity();
-    illumination.at(0, 1, 2) = 1e6;  // clamped to fp16 max
-    ImageD prev(gw, gh, 2);
-    for (int y = 0; y < gh; ++y)
-      for (int x = 0; x < gw; ++x) {
-        prev.at(x, y, 0) = static_cast<float>(r.uniform(0, 4));
-        prev.at(x, y, 1) = r.chance(0.2) ? -1.0 : static_cast<double>(static_cast<int>(r.uniform(0, 9)));
+  for (const bool given : {false, true})
+    for (const auto& size : kSizes) {
+      const int w = size[0], h = size[1], gw = (w + 2) / 3, gh = (h + 2) / 3;
+      CAPTURE(given);
+      CAPTURE(w);
+      CAPTURE(h);
+      Random r(11u + static_cast<std::uint32_t>(w));
+      ImageD illumination = random_color(r, w, h, 0, 4, 0);
+      illumination.at(1, 1, 0) = std::numeric_limits<double>::quiet_NaN();  // a dropped sample
+      illumination.at(2, 0, 1) = std::numeric_limits<double>::infinity();
+      illumination.at(0, 1, 2) = 1e6;  // clamped to fp16 max
+      ImageD prev(gw, gh, given ? 3 : 2);
+      for (int y = 0; y < gh; ++y)
+        for (int x = 0; x < gw; ++x) {
+          prev.at(x, y, 0) = static_cast<float>(r.uniform(0, 4));
+          prev.at(x, y, 1) = r.chance(0.2) ? -1.0 : static_cast<double>(static_cast<int>(r.uniform(0, 9)));
+          if (given) prev.at(x, y, 2) = r.chance(0.1) ? -1.0 : static_cast<float>(r.uniform(0, 4));
+        }
+      prev.at(0, 0, 1) = 4;  // the pixel with the NaN
+      if (given && gw > 1) {
+        prev.at(1, 0, 1) = 0;  // z: not finite, and above the fp16 maximum
+        prev.at(1, 0, 2) = std::numeric_limits<double>::quiet_NaN();
+        prev.at(0, 0, 2) = 1e6;
       }
-    prev.at(0, 0, 1) = 4;  // the pixel with the NaN
-    GraphHarness harness(*device);
-    RenderGraph g;
-    const auto in = harness.input(g, "illumination", illumination, F::RGBA32F);
-    const auto gp = harness.input(g, "gradient_prev", prev, F::RG32F);
-    const auto out =
-        g.add_image("gradient", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh), F::RGBA16F);
-    passes::add_gradient(g, pipelines, {in, gp, out});
-    ImageD got;
-    harness.readback(g, out, &got);
-    harness.run(g);
-    const ImageD want = ref::gradient(quantize(illumination, F::RGBA32F), quantize(prev, F::RG32F));
-    DENOISE_CHECK_CLOSE(compare(got, want, 2, fp16_tolerance(4)), "gradient");
-    CHECK(got.at(0, 0, 0) == 0.0);
-    CHECK(got.at(0, 0, 1) == 0.0);
-  }
+      GraphHarness harness(*device);
+      RenderGraph g;
+      const auto in = harness.input(g, "illumination", illumination, F::RGBA32F);
+      const auto gp = harness.input(g, "gradient_prev", prev, given ? F::RGBA32F : F::RG32F);
+      const auto out =
+          g.add_image("gradient", static_cast<std::uint32_t>(gw), static_cast<std::uint32_t>(gh), F::RGBA16F);
+      passes::add_gradient(g, pipelines, {in, gp, out, false, given});
+      ImageD got;
+      harness.readback(g, out, &got);
+      harness.run(g);
+      const ImageD want =
+          ref::gradient(quantize(illumination, F::RGBA32F), quantize(prev, given ? F::RGBA32F : F::RG32F), given);
+      DENOISE_CHECK_CLOSE(compare(got, want, 2, fp16_tolerance(4)), "gradient");
+      if (given) {
+        // The pixel's NaN is not read: l_cur is z, clamped to the fp16 maximum.
+        CHECK(got.at(0, 0, 1) == 65504.0);
+        if (gw > 1) CHECK(got.at(1, 0, 1) == 0.0);  // a missing l_cur: nothing
+      } else {
+        CHECK(got.at(0, 0, 0) == 0.0);
+        CHECK(got.at(0, 0, 1) == 0.0);
+      }
+    }
 }
 
 // Each iteration three ways: guided by depth_normal (plain), also writing the strata guide (the

@@ -124,7 +124,8 @@ void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, cons
   check_input("normal", in.normal, 3);
   check_input("depth", in.depth, impl_->config.depth_gradient_given ? 2 : 1);
   check_input("motion", in.motion, 2);
-  if (in.gradient_samples) check_input("gradient_samples", *in.gradient_samples, 2);
+  if (in.gradient_samples)
+    check_input("gradient_samples", *in.gradient_samples, impl_->config.gradient_current_given ? 3 : 2);
   check_output("radiance", out.radiance, F::RGBA32F);
   if (out.display) check_output("display", *out.display, F::RGBA8Unorm);
   // The graph tracks each import's state on its own: one image given twice would be transitioned
@@ -185,7 +186,8 @@ void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, cons
     gradient_samples = import("gradient_samples", *in.gradient_samples, gw, gh);
   passes::add_denoiser(g, impl_->pipelines,
                        {illumination, motion, depth_normal, albedo, counters, radiance, display, gradient_samples,
-                        gradient_samples ? "" : "no gradient samples given this frame (nothing moved)"},
+                        gradient_samples ? "" : "no gradient samples given this frame (nothing moved)",
+                        impl_->config.gradient_current_given},
                        impl_->config.settings, impl_->config.method);
   g.output(radiance, out.final_state);
   if (out.display) g.output(display, out.final_state);

@@ -120,7 +120,8 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
       const ResourceId luminance = graph.add_image("noisy_luminance", w, h, F::R32F, Lifetime::Persistent);
       add_gradient_reprojected(graph, pipelines, {in.illumination, in.motion, in.depth_normal, luminance, current});
     } else {
-      add_gradient(graph, pipelines, {in.illumination, *in.gradient_prev, current, in.specular.has_value()})
+      add_gradient(graph, pipelines,
+                   {in.illumination, *in.gradient_prev, current, in.specular.has_value(), in.gradient_current_given})
           .skip_if(skip, in.gradient_skip_reason);
     }
     // Several iterations read depth_normal's strata centres from an image of their own.

@@ -3,14 +3,15 @@
 #include <cstddef>
 #include <cstring>
 
-#include "shaders/gradient.hpp"
+#include "shaders/gradient.given.hpp"
+#include "shaders/gradient.in_illumination.hpp"
 #include "shaders/gradient_reprojected.hpp"
 
 namespace asvgf::passes {
 namespace {
 
 // The shader's uniform block, as the shader tool generated it.
-using Uniforms = asvgf::shaders::gradient_uniforms::Params;
+using Uniforms = asvgf::shaders::gradient_in_illumination_uniforms::Params;
 
 }  // namespace
 
@@ -18,12 +19,12 @@ graph::PassBuilder add_gradient(graph::RenderGraph& graph, PipelineCache& pipeli
   const auto& full = graph.resource(r.illumination);
   const auto& out = graph.resource(r.gradient);
   const Uniforms u{full.width, full.height, out.width, out.height, r.luminance_in_alpha ? 1u : 0u, 0, 0, 0};
-  const hal::ShaderInfo& shader = asvgf::shaders::gradient;
-  const auto pipeline = pipelines.get<Uniforms>(shader);
-  return add_compute_pass(
-      graph, "gradient", shader, pipeline,
-      {{"illumination", r.illumination}, {"gradient_prev", r.gradient_prev}, {"gradient", r.gradient}}, to_bytes(u),
-      {u.gradient_width, u.gradient_height, 1});
+  const hal::ShaderInfo& shader =
+      r.current_given ? asvgf::shaders::gradient_given : asvgf::shaders::gradient_in_illumination;
+  std::vector<Binding> bindings = {{"gradient_prev", r.gradient_prev}, {"gradient", r.gradient}};
+  if (!r.current_given) bindings.push_back({"illumination", r.illumination});
+  return add_compute_pass(graph, "gradient", shader, pipelines.get<Uniforms>(shader), std::move(bindings), to_bytes(u),
+                          {u.gradient_width, u.gradient_height, 1});
 }
 
 // One 12x9 workgroup per 4x3 strata (the shader's layout).

@@ -9,10 +9,13 @@
 namespace asvgf::passes {
 
 struct GradientResources {
-  graph::ResourceId illumination = 0;   // read: w x h, this frame's demodulated samples (RGBA32F)
-  graph::ResourceId gradient_prev = 0;  // read: ceil(w/3) x ceil(h/3) RG32F (l_prev, index or -1)
+  // w x h, this frame's demodulated samples: read where they hold the re-shaded samples (not
+  // current_given); with current_given only its size is used.
+  graph::ResourceId illumination = 0;
+  graph::ResourceId gradient_prev = 0;  // read: ceil(w/3) x ceil(h/3) (l_prev, index or -1[, l_cur])
   graph::ResourceId gradient = 0;       // written: ceil(w/3) x ceil(h/3) RGBA16F (delta, Delta, 0, 0)
   bool luminance_in_alpha = false;      // illumination.a holds the luminance (pathtrace's split signals)
+  bool current_given = false;           // gradient_prev.z holds l_cur (GraphDenoiserInputs::gradient_current_given)
 };
 // Adds the pass "gradient".
 graph::PassBuilder add_gradient(graph::RenderGraph& graph, PipelineCache& pipelines, const GradientResources& r);
