@@ -99,6 +99,9 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
                  "(estimated from reprojected noisy luminance, no renderer help; Q2RTX)")
       ->check(CLI::IsMember({"reshaded", "reprojected"}))
       ->capture_default_str();
+  add("--antilag", d.antilag, "antilag",
+      "A-SVGF: how strongly the temporal gradient shortens the history (paper 1, measured best 4; 0: "
+      "constant alpha)");
   add("--history-cap", d.history_cap, "history_cap", "Maximum history length in frames");
   add("--history-tap", d.history_tap, "history_tap", "A-trous iteration whose output feeds the colour history");
 }

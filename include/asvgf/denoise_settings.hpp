@@ -5,6 +5,8 @@
 //   alpha 0.2, moments_alpha 0.2, atrous_iterations 5, sigma_z 1, sigma_n 128, sigma_l 4, B3-spline
 //   kernel, history_tap 0, min_history 4: SVGF paper (Schied et al. 2017) and Falcor's SVGF pass.
 //   gradient_iterations 3: Q2RTX (a-trous over the gradient at 1/3 resolution).
+//   antilag 4: measured (the paper's is 1; Q2RTX's flt_antilag_hf 1 with a history shortened by
+//   (1 - alpha)^10).
 //   history_cap 32: Falcor's SVGF (Q2RTX caps at 256 with alpha_min 0.02, moments alpha 0.01).
 //   specular_atrous_iterations 4: measured on `glossy` at 1080p (Q2RTX 3; docs/performance.md).
 #pragma once
@@ -41,6 +43,11 @@ struct DenoiseSettings {
   float history_cap = 32.0f;                     // max history length (Falcor SVGF; Q2RTX 256)
   int history_tap = 0;                           // a-trous iteration whose output feeds the colour history (SVGF)
   GradientSource gradient_source = GradientSource::Reshaded;  // A-SVGF's gradient (see above)
+  // A-SVGF's anti-lag strength: lambda = min(1, antilag |delta^| / Delta^), the blend factor's and
+  // the history length's response to the temporal gradient (the paper: 1; Q2RTX's flt_antilag_hf).
+  // 4 measured best of 1, 2, 4, 8 at 1080p: the gradient, filtered over strata, dilutes a local
+  // change with the unchanged light around it (docs/quality.md, "Anti-lag strength").
+  float antilag = 4.0f;
   float min_history = 4.0f;                                   // below this, variance is estimated spatially (SVGF)
   float exposure = 1.0f;                                      // composite: multiplier before the tone curve
   Tonemap tonemap = Tonemap::Aces;                            // composite: ACES fit (Narkowicz 2015)

@@ -256,7 +256,7 @@ TemporalResult temporal(const TemporalInputs& in, const TemporalParams& params) 
           if (in.gradient) {
             const int gx = std::min(x / 3, in.gradient->width - 1), gy = std::min(y / 3, in.gradient->height - 1);
             const double d = in.gradient->at(gx, gy, 0), big = in.gradient->at(gx, gy, 1);
-            lambda = big > 0 ? std::min(1.0, std::abs(d) / big) : 0;
+            lambda = big > 0 ? std::min(1.0, params.antilag * std::abs(d) / big) : 0;
           }
           n = std::min(hist.len * (1 - lambda) + 1, params.history_cap);
           const double a = std::max((1 - lambda) * params.alpha + lambda, 1 / n);

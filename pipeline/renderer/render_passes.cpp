@@ -242,8 +242,14 @@ void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const D
                     std::uint32_t width, std::uint32_t height) {
   // Buffers the method lacks are bound to the noisy input (always there) and flagged unavailable.
   const std::uint32_t available = (in.gradient ? 1u : 0u) | (in.moments ? 2u : 0u) | (in.variance ? 4u : 0u);
-  const DebugViewParams params{
-      width, height, static_cast<std::uint32_t>(view), 0.25f, in.denoise.alpha, in.denoise.history_cap, available, 0};
+  const DebugViewParams params{width,
+                               height,
+                               static_cast<std::uint32_t>(view),
+                               0.25f,
+                               in.denoise.alpha,
+                               in.denoise.history_cap,
+                               available,
+                               in.denoise.antilag};
   add_compute_pass(graph, "debug_view", shaders::debug_view, pipelines.get<DebugViewParams>(shaders::debug_view),
                    {{"depth_normal", in.depth_normal},
                     {"motion", in.motion},

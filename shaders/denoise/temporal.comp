@@ -5,7 +5,7 @@
 // - Reprojects last frame's colour, moments and history length bilinearly through the motion
 //   vector, each of the 4 taps tested for depth and normal consistency; fails (history reset) when
 //   the valid taps' bilinear weight is below 0.01 (Falcor's SVGF).
-// - alpha_i = (1 - lambda) alpha + lambda, lambda = min(1, |delta^|/Delta^) (0 when Delta^ = 0)
+// - alpha_i = (1 - lambda) alpha + lambda, lambda = min(1, antilag |delta^|/Delta^) (0 when Delta^ = 0)
 //   with the ADAPTIVE variant; constant alpha otherwise. Moments use their own alpha the same way.
 //   Short histories average uniformly: alpha_eff = max(alpha_i, 1/n); a gradient also shortens the
 //   history, n = n_prev (1 - lambda) + 1, capped at history_cap.
@@ -27,6 +27,10 @@ layout(set = 0, binding = 0) uniform Params {
   float moments_alpha;
   float history_cap;
   uint history_valid;  // 0: no history this frame (first frame, camera cut): reset everywhere
+  float antilag;       // lambda = min(1, antilag |delta^| / Delta^)
+  uint pad0;           // WGSL rounds a uniform block up to 16 bytes: the C++ struct must be that size
+  uint pad1;
+  uint pad2;
 } params;
 layout(set = 0, binding = 1) uniform texture2D illumination;
 layout(set = 0, binding = 2) uniform texture2D motion;
@@ -118,7 +122,7 @@ float gradient_lambda(ivec2 p) {
 #ifdef ADAPTIVE
   ivec2 s = min(p / 3, ivec2(params.gradient_width, params.gradient_height) - 1);
   vec2 g = texelFetch(gradient, s, 0).xy;
-  return g.y > 0.0 ? min(1.0, abs(g.x) / g.y) : 0.0;
+  return g.y > 0.0 ? min(1.0, params.antilag * abs(g.x) / g.y) : 0.0;
 #else
   return 0.0;
 #endif

@@ -1,6 +1,6 @@
 // debug_view: one intermediate buffer as a displayable image (the demo's buffer views).
 // mode 0 normals, 1 linear depth, 2 motion, 3 albedo, 4 noisy input (tonemapped), and the denoiser's
-// state as heat maps (black, red, yellow, white): 5 temporal gradient lambda = min(1, |delta^|/Delta^),
+// state as heat maps (black, red, yellow, white): 5 temporal gradient lambda = min(1, antilag |delta^|/Delta^),
 // 6 temporal blend factor alpha = max((1 - lambda) alpha + lambda, 1/n) as the temporal pass computes
 // it, 7 standard deviation of luminance s/(1+s) (what the a-trous filter is steered by),
 // 8 history length n / history_cap. A buffer the method does not have (`available` bit clear)
@@ -20,7 +20,7 @@ layout(set = 0, binding = 0, std140) uniform Params {
   float alpha;        // the temporal pass's constant alpha
   float history_cap;
   uint available;     // 1: gradient (1/3 res: delta^, Delta^), 2: moments (E[l], sqrt(Var[l]), n), 4: variance (.a)
-  uint pad;
+  float antilag;      // the temporal pass's gradient response (DenoiseSettings::antilag)
 } params;
 
 layout(set = 0, binding = 1) uniform texture2D depth_normal;
@@ -40,7 +40,7 @@ vec3 heat(float t) {
 float gradient_lambda(ivec2 p) {
   if ((params.available & 1u) == 0u) return 0.0;
   vec2 g = texelFetch(gradient, min(p / 3, textureSize(gradient, 0) - 1), 0).xy;
-  return g.y > 0.0 ? min(1.0, abs(g.x) / g.y) : 0.0;
+  return g.y > 0.0 ? min(1.0, params.antilag * abs(g.x) / g.y) : 0.0;
 }
 
 void main() {

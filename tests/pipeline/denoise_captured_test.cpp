@@ -102,7 +102,8 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
     const ImageD q_prev_color = quantize(prev_color, F::RGBA16F);
     const ImageD q_prev_moments = quantize(prev_moments, F::RGBA16F);
     ref::TemporalInputs in{&illumination, &motion, &dn_now, &prev_dn, &q_prev_color, &q_prev_moments, nullptr};
-    const auto want = ref::temporal(in, {settings.alpha, settings.moments_alpha, settings.history_cap, true});
+    const auto want =
+        ref::temporal(in, {settings.alpha, settings.moments_alpha, settings.history_cap, true, settings.antilag});
     const double m = magnitude(illumination) + magnitude(prev_color);
     DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 3, [m](double v) { return fp16_ulp(v) + 1e-5 * m; }),
                         "temporal colour");

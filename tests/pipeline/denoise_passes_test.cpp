@@ -394,6 +394,7 @@ TEST_CASE(
       c.illumination.at(w - 2, h - 1, 1) = 1e6;
       c.illumination.at(w - 3, h - 1, 2) = 65503.98828125;  // the largest float below
       asvgf::DenoiseSettings settings;
+      if (w == 32) settings.antilag = 3.0f;  // a stronger response to the gradient, in one size
       passes::SanitizeCounters counters(*device);
       GraphHarness harness(*device);
       ImageD integrated, moments;
@@ -430,7 +431,8 @@ TEST_CASE(
       const ImageD gradient = quantize(c.gradient, F::RGBA16F);
       ref::TemporalInputs in{
           &illumination, &motion, &dn, &prev_dn, &prev_color, &prev_moments, adaptive ? &gradient : nullptr};
-      const auto want = ref::temporal(in, {settings.alpha, settings.moments_alpha, settings.history_cap, true});
+      const auto want =
+          ref::temporal(in, {settings.alpha, settings.moments_alpha, settings.history_cap, true, settings.antilag});
       DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 3, fp16_tolerance(4)), "temporal colour");
       DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 4, fp16_tolerance(20)), "temporal variance");
       DENOISE_CHECK_CLOSE(compare_moments(moments, want.moments, 40, 20), "temporal moments and length");

@@ -35,7 +35,7 @@ const Expected kExpected[] = {
     {frame::Method::Raw, "raw", 0x9e60626002f2596full},
     {frame::Method::Ema, "ema", 0xa14f6011c2143061ull},
     {frame::Method::Svgf, "svgf", 0x694d2f372c406d86ull},
-    {frame::Method::Asvgf, "asvgf", 0xce7d32efdb032561ull},
+    {frame::Method::Asvgf, "asvgf", 0xd3460e2eb08d2861ull},
     {frame::Method::Reference, "reference", 0x3e41802295162b54ull},
 };
 

@@ -38,6 +38,8 @@ TEST_CASE("denoiser settings: the defaults and every range's ends pass the check
       {"history_cap", [](auto& s) { s.history_cap = 1.0f; }},
       {"history_cap", [](auto& s) { s.history_cap = 4096.0f; }},
       {"history_tap", [](auto& s) { s.history_tap = s.atrous_iterations - 1; }},
+      {"antilag", [](auto& s) { s.antilag = 0.0f; }},
+      {"antilag", [](auto& s) { s.antilag = 64.0f; }},
       {"min_history", [](auto& s) { s.min_history = 0.0f; }},
       {"exposure", [](auto& s) { s.exposure = 0.0f; }},
       {"specular_atrous_iterations", [](auto& s) { s.specular_atrous_iterations = 0; }},
@@ -80,6 +82,9 @@ TEST_CASE(
       {"history_tap", [](auto& s) { s.history_tap = -1; }},
       {"history_tap", [](auto& s) { s.atrous_iterations = 0, s.history_tap = 1; }},
       {"gradient_source", [](auto& s) { s.gradient_source = static_cast<GradientSource>(2); }},
+      {"antilag", [](auto& s) { s.antilag = kNan; }},
+      {"antilag", [](auto& s) { s.antilag = -1.0f; }},
+      {"antilag", [](auto& s) { s.antilag = 65.0f; }},
       {"min_history", [](auto& s) { s.min_history = kNan; }},
       {"min_history", [](auto& s) { s.min_history = -1.0f; }},
       {"exposure", [](auto& s) { s.exposure = kInf; }},
@@ -109,7 +114,7 @@ TEST_CASE("denoiser settings: every checked setting has a range, and every range
   }
   // Every member of DenoiseSettings.
   for (const char* member : {"alpha", "moments_alpha", "atrous_iterations", "sigma_z", "sigma_n", "sigma_l", "kernel",
-                             "gradient_iterations", "history_cap", "history_tap", "gradient_source", "min_history",
-                             "exposure", "tonemap", "specular_atrous_iterations"})
+                             "gradient_iterations", "history_cap", "history_tap", "gradient_source", "antilag",
+                             "min_history", "exposure", "tonemap", "specular_atrous_iterations"})
     CHECK_MESSAGE(names.count(member) == 1, member << " has no range");
 }

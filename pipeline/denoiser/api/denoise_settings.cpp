@@ -75,6 +75,9 @@ const std::vector<Rule>& rules() {
          return s.gradient_source == GradientSource::Reshaded || s.gradient_source == GradientSource::Reprojected;
        },
        [](const auto& s) { return std::to_string(static_cast<std::uint32_t>(s.gradient_source)); }},
+      {{"antilag", "--antilag", "[0, 64]"},
+       [](const auto& s) { return in_closed(s.antilag, 0, 64); },
+       [](const auto& s) { return text(s.antilag); }},
       {{"min_history", "", "[0, 4096]"},
        [](const auto& s) { return in_closed(s.min_history, 0, 4096); },
        [](const auto& s) { return text(s.min_history); }},

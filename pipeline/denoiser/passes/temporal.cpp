@@ -21,7 +21,7 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
                                 const DenoiseSettings& s) {
   const bool adaptive = r.gradient.has_value();
   const auto& full = graph.resource(r.illumination);
-  Uniforms u{full.width, full.height, 1, 1, s.alpha, s.moments_alpha, s.history_cap, 0};
+  Uniforms u{full.width, full.height, 1, 1, s.alpha, s.moments_alpha, s.history_cap, 0, s.antilag};
   if (adaptive) {
     const auto& g = graph.resource(*r.gradient);
     u.gradient_width = g.width;
