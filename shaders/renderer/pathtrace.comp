@@ -10,7 +10,8 @@
 // (l_prev, index, l_cur, 1). Shading it apart keeps the landing pixel's own fresh sample for the
 // histories: the carried sample repeats one the history already holds (docs/quality.md,
 // camera-only path). In the same dispatch as the pixels, so that its paths fill the pixels' tail
-// instead of running as one short wave of their own (0.23 against 0.15 ms at 1080p on the H200).
+// instead of running as one short wave of their own (+0.163 ms at 1080p on the H200 against 0.230
+// for a pass of its own).
 // CARRIED_ONLY shades the strata alone (split signals: their storage images are at WebGPU's limit).
 // With SPLIT_SPECULAR the radiance is written as two signals, as Q2RTX and NRD filter them: what
 // the primary surface's GGX lobe reflects (`specular`, divided by that lobe's directional albedo)
