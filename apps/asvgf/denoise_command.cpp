@@ -178,12 +178,14 @@ int run_denoise(DenoiseOptions& o) {
   config.settings = o.device.denoise;
   config.depth_gradient_given = o.depth_gradient;
   // The gradient files' convention, from the first that holds a sample (each frame's is checked).
+  const BufferSpec gradient_spec{"gradient", gw, gh, {"R", "G"}};
+  auto gradient_file = [&](int f) {
+    return gradient.path(f).string() + " (gradient, frame " + std::to_string(f) + ")";
+  };
   for (int i = 0; i < frames && !gradient.empty(); ++i) {
-    const std::filesystem::path path = gradient.path(o.first + i);
-    if (!std::filesystem::exists(path)) continue;  // reported when its frame is read
-    const std::string what = path.string() + " (gradient, frame " + std::to_string(o.first + i) + ")";
+    if (!std::filesystem::exists(gradient.path(o.first + i))) continue;  // reported when its frame is read
     if (const auto marked =
-            gradient_current_marked(read_frame(gradient, o.first + i, {"gradient", gw, gh, {"R", "G"}}), what)) {
+            gradient_current_marked(read_frame(gradient, o.first + i, gradient_spec), gradient_file(o.first + i))) {
       config.gradient_current_given = *marked;
       break;
     }
@@ -284,11 +286,10 @@ int run_denoise(DenoiseOptions& o) {
     previous_depth = std::move(depth_now.rgba);
     std::optional<DenoiserImage> samples;
     if (!gradient.empty()) {
-      const render::ExrImage img = read_frame(gradient, f, {"gradient", gw, gh, {"R", "G"}});
-      const std::string what = gradient.path(f).string() + " (gradient, frame " + std::to_string(f) + ")";
-      const auto marked = gradient_current_marked(img, what);
+      const render::ExrImage img = read_frame(gradient, f, gradient_spec);
+      const auto marked = gradient_current_marked(img, gradient_file(f));
       if (marked && *marked != config.gradient_current_given)
-        throw render::ImageIoError(what + ": channel A " +
+        throw render::ImageIoError(gradient_file(f) + ": channel A " +
                                    (*marked ? "marks B as this frame's luminance" : "does not mark B") +
                                    ", unlike the sequence's first gradient samples");
       if (has_gradient_samples(img)) {
