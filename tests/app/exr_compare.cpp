@@ -1,6 +1,7 @@
 // exr_compare A_PATTERN B_PATTERN FIRST COUNT [MAX_RELMSE]: compares two EXR frame sequences
 // (printf-style patterns, RGB) frame by frame. Prints per frame the relative MSE of B against A
-// (as metrics.csv computes it), the largest absolute difference and how many values differ at all;
+// (as metrics.csv computes it), B's mean over A's minus 1 (the energy bias), the largest absolute
+// difference and how many values differ at all;
 // exits 0 when every frame's relMSE is at most MAX_RELMSE (default 0: bit-identical), 1 otherwise,
 // 2 when a file cannot be read or the sizes differ.
 #include <cmath>
@@ -31,8 +32,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "exr_compare: frame %d: %ux%u against %ux%u\n", f, a.width, a.height, b.width, b.height);
         return 2;
       }
-      double max_abs = 0;
+      double max_abs = 0, sum_a = 0, sum_b = 0;
       std::size_t differ = 0;
+      for (std::size_t i = 0; i < a.rgba.size(); ++i)
+        if (i % 4 < 3) sum_a += a.rgba[i], sum_b += b.rgba[i];
       for (std::size_t i = 0; i < a.rgba.size(); ++i)
         if (i % 4 < 3 && a.rgba[i] != b.rgba[i]) {
           ++differ;
@@ -40,8 +43,8 @@ int main(int argc, char** argv) {
         }
       const double relmse = asvgf::render::relative_mse(b.rgba, a.rgba);
       worst = std::max(worst, relmse);
-      std::printf("frame %d: relMSE %.3g, max |difference| %.3g, %zu of %zu values differ\n", f, relmse, max_abs,
-                  differ, a.rgba.size() / 4 * 3);
+      std::printf("frame %d: relMSE %.3g, energy bias %+.2f%%, max |difference| %.3g, %zu of %zu values differ\n", f,
+                  relmse, sum_a > 0 ? 100.0 * (sum_b / sum_a - 1.0) : 0.0, max_abs, differ, a.rgba.size() / 4 * 3);
       ok = ok && (max_relmse > 0 ? relmse <= max_relmse : differ == 0);
     }
   } catch (const std::exception& e) {
