@@ -46,7 +46,8 @@ struct DenoiseSettings {
   // A-SVGF's anti-lag strength: lambda = min(1, antilag |delta^| / Delta^), the blend factor's and
   // the history length's response to the temporal gradient (the paper: 1; Q2RTX's flt_antilag_hf).
   // 4 measured best of 1, 2, 4, 8 at 1080p: the gradient, filtered over strata, dilutes a local
-  // change with the unchanged light around it (docs/quality.md, "Anti-lag strength").
+  // change with the unchanged light around it (docs/quality.md, "Anti-lag strength"). With the
+  // reprojected gradient on noisy light 1 is better: its noise alone then shortens the history.
   float antilag = 4.0f;
   float min_history = 4.0f;                                   // below this, variance is estimated spatially (SVGF)
   float exposure = 1.0f;                                      // composite: multiplier before the tone curve

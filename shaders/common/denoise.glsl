@@ -55,6 +55,10 @@ float weight_depth(Surface p, Surface q, float dist_l1, float sigma_z) {
   return hit(q) ? exp(-abs(p.z - q.z) / tolerance) : 0.0;
 }
 
+// A-SVGF's temporal gradient response: lambda = min(1, antilag |delta^| / Delta^), 0 where Delta^ = 0;
+// g = (delta^, Delta^). The temporal pass's, and the debug view's picture of it.
+float gradient_response(vec2 g, float antilag) { return g.y > 0.0 ? min(1.0, antilag * abs(g.x) / g.y) : 0.0; }
+
 // w_n = max(0, <n_p, n_q>)^sigma_n
 float weight_normal(Surface p, Surface q, float sigma_n) {
   return pow(clamp(dot(p.n, q.n), 0.0, 1.0), sigma_n);

@@ -121,8 +121,7 @@ History reproject(ivec2 p, Surface cur) {
 float gradient_lambda(ivec2 p) {
 #ifdef ADAPTIVE
   ivec2 s = min(p / 3, ivec2(params.gradient_width, params.gradient_height) - 1);
-  vec2 g = texelFetch(gradient, s, 0).xy;
-  return g.y > 0.0 ? min(1.0, params.antilag * abs(g.x) / g.y) : 0.0;
+  return gradient_response(texelFetch(gradient, s, 0).xy, params.antilag);
 #else
   return 0.0;
 #endif

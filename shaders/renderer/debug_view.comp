@@ -8,6 +8,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
+#include "common/denoise.glsl"
 #include "common/scene_data.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -39,8 +40,7 @@ vec3 heat(float t) {
 
 float gradient_lambda(ivec2 p) {
   if ((params.available & 1u) == 0u) return 0.0;
-  vec2 g = texelFetch(gradient, min(p / 3, textureSize(gradient, 0) - 1), 0).xy;
-  return g.y > 0.0 ? min(1.0, params.antilag * abs(g.x) / g.y) : 0.0;
+  return gradient_response(texelFetch(gradient, min(p / 3, textureSize(gradient, 0) - 1), 0).xy, params.antilag);
 }
 
 void main() {

@@ -34,13 +34,14 @@ int main(int argc, char** argv) {
       }
       double max_abs = 0, sum_a = 0, sum_b = 0;
       std::size_t differ = 0;
-      for (std::size_t i = 0; i < a.rgba.size(); ++i)
-        if (i % 4 < 3) sum_a += a.rgba[i], sum_b += b.rgba[i];
-      for (std::size_t i = 0; i < a.rgba.size(); ++i)
-        if (i % 4 < 3 && a.rgba[i] != b.rgba[i]) {
+      for (std::size_t i = 0; i < a.rgba.size(); ++i) {
+        if (i % 4 == 3) continue;
+        sum_a += a.rgba[i], sum_b += b.rgba[i];
+        if (a.rgba[i] != b.rgba[i]) {
           ++differ;
           max_abs = std::max(max_abs, double(std::fabs(a.rgba[i] - b.rgba[i])));
         }
+      }
       const double relmse = asvgf::render::relative_mse(b.rgba, a.rgba);
       worst = std::max(worst, relmse);
       std::printf("frame %d: relMSE %.3g, energy bias %+.2f%%, max |difference| %.3g, %zu of %zu values differ\n", f,
