@@ -23,6 +23,7 @@
 #include "report/metrics.hpp"
 #include "report/report.hpp"
 #include "report/summary.hpp"
+#include "report_runs.hpp"
 #include "scene_options.hpp"
 
 namespace asvgf::cli {
@@ -32,7 +33,8 @@ struct ReportOptions {
   SceneOptions scene;
   int frames = 0;  // 0: the whole animation
   std::string methods;
-  std::string scenes;  // --scenes: several scenes and a summary; empty: --scene only
+  std::vector<std::string> runs;  // --run: runs of the user's own settings
+  std::string scenes;             // --scenes: several scenes and a summary; empty: --scene only
   std::uint32_t reference_spp = 512;
   std::uint32_t max_accumulation_spp = 64;
   std::string out = "out/report";
@@ -75,70 +77,6 @@ std::vector<FrameTime> time_back_to_back(hal::Device& device, const scene::Scene
     times.push_back(frame_time(renderer));
   }
   return times;
-}
-
-std::vector<report::RunSpec> all_runs(std::uint32_t max_accumulation_spp) {
-  using frame::Method;
-  std::vector<report::RunSpec> runs;
-  auto add = [&](std::string name, std::string what, Method m, auto&& tweak) {
-    report::RunSpec s;
-    s.name = std::move(name);
-    s.description = std::move(what);
-    s.method = m;
-    tweak(s);
-    runs.push_back(s);
-  };
-  auto none = [](report::RunSpec&) {};
-  add("raw", "1 spp, no filter", Method::Raw, none);
-  add("ema-0.2", "EMA, constant α 0.2, no spatial filter", Method::Ema, none);
-  add("ema-0.05", "EMA, constant α 0.05 (ghosting)", Method::Ema, [](report::RunSpec& s) { s.denoise.alpha = 0.05f; });
-  add("svgf", "SVGF: constant α 0.2, 5 à-trous iterations (B3 5x5)", Method::Svgf, none);
-  add("asvgf", "A-SVGF: adaptive α, 5 à-trous iterations (B3 5x5)", Method::Asvgf, none);
-  add("asvgf-reproj", "A-SVGF, gradient from reprojected noisy luminance (no re-shading; Q2RTX's LF)", Method::Asvgf,
-      [](report::RunSpec& s) { s.denoise.gradient_source = asvgf::GradientSource::Reprojected; });
-  add("asvgf-nodemod", "A-SVGF filtering radiance with the albedo in it (--no-demodulation)", Method::Asvgf,
-      [](report::RunSpec& s) { s.demodulate = false; });
-  add("asvgf-split", "A-SVGF filtering diffuse and specular light apart (--specular-split)", Method::Asvgf,
-      [](report::RunSpec& s) { s.specular_split = true; });
-  add("asvgf-box9", "A-SVGF, the seed's 3x3 box kernel, 9 iterations", Method::Asvgf, [](report::RunSpec& s) {
-    s.denoise.kernel = asvgf::AtrousKernel::Box;
-    s.denoise.atrous_iterations = 9;
-  });
-  add("asvgf-box15", "A-SVGF, the seed's 3x3 box kernel, 15 iterations", Method::Asvgf, [](report::RunSpec& s) {
-    s.denoise.kernel = asvgf::AtrousKernel::Box;
-    s.denoise.atrous_iterations = 15;
-  });
-  for (std::uint32_t spp = 1; spp <= max_accumulation_spp; spp *= 2)
-    add("accum-" + std::to_string(spp) + "spp", "plain accumulation, " + std::to_string(spp) + " spp a frame",
-        Method::Reference, [spp](report::RunSpec& s) { s.spp = spp; });
-  return runs;
-}
-
-// --methods: a comma list of method names (raw, ema, svgf, asvgf, reference or accum) or run names.
-std::vector<report::RunSpec> select_runs(std::vector<report::RunSpec> runs, const std::string& list) {
-  if (list.empty()) return runs;
-  std::vector<report::RunSpec> picked;
-  std::stringstream ss(list);
-  std::string token;
-  std::set<std::string> names;
-  while (std::getline(ss, token, ',')) {
-    if (token.empty()) continue;
-    bool any = false;
-    for (const auto& r : runs) {
-      const std::string method(frame::to_string(r.method));
-      if (r.name == token || method == token || (token == "accum" && r.accumulation())) {
-        any = true;
-        names.insert(r.name);
-      }
-    }
-    if (!any)
-      throw CLI::ValidationError("--methods", "'" + token +
-                                                  "' names no run: use raw, ema, svgf, asvgf, reference (accum) "
-                                                  "or a run name such as ema-0.05, asvgf-box9, accum-4spp");
-  }
-  for (const auto& r : runs)
-    if (names.count(r.name)) picked.push_back(r);
-  return picked;
 }
 
 // The part of the image the crops show: all of it when small, else a window near the top right
@@ -194,6 +132,7 @@ std::string command_line(const ReportOptions& o, int frames) {
                   std::to_string(o.reference_spp) + " --max-accumulation-spp " +
                   std::to_string(o.max_accumulation_spp) + " --seed " + std::to_string(o.scene.seed);
   if (!o.methods.empty()) s += " --methods " + o.methods;
+  for (const auto& r : o.runs) s += " --run '" + r + "'";
   if (o.scene.software_bvh) s += " --software-bvh";
   if (!default_backend_chosen(o.scene.backend)) s += " --backend " + chosen_backend(o.scene.backend);
   if (o.timing != "auto") s += " --timing " + o.timing;
@@ -477,7 +416,13 @@ std::vector<std::string> scene_list(const std::string& list) {
 
 int run_report(ReportOptions& o) {
   finish_scene_options(o.scene);
-  const auto specs = select_runs(all_runs(o.max_accumulation_spp), o.methods);
+  const auto builtin = builtin_runs(o.max_accumulation_spp);
+  auto specs = select_runs(builtin, o.methods);
+  std::vector<report::RunSpec> taken = builtin;
+  for (const std::string& text : o.runs) {
+    specs.push_back(parse_run(text, taken));
+    taken.push_back(specs.back());
+  }
   const std::filesystem::path out(o.out);
   if (o.scenes.empty()) {
     auto device = open_device(o.scene);
@@ -522,6 +467,14 @@ std::function<int()> add_report_command(CLI::App& app) {
   cmd->add_option("--methods", o->methods,
                   "Comma list restricting the runs: raw, ema, svgf, asvgf, reference (or accum), or run names "
                   "(ema-0.05, asvgf-box9, accum-4spp, ...)");
+  cmd->add_option("--run", o->runs,
+                  "A run of your own, NAME=METHOD [OPTIONS], added to the runs --methods picks (repeat it for "
+                  "more): METHOD raw, ema, svgf or asvgf; OPTIONS those of `asvgf render` that tune the "
+                  "denoiser (--sigma-l, --history-tap, --alpha, ..., --no-demodulation, --specular-split), "
+                  "e.g. --run 'asvgf-sl8=asvgf --sigma-l 8'")
+      ->type_size(1)
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--reference-spp", o->reference_spp, "Samples per pixel of the reference")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();

@@ -16,6 +16,9 @@
                                            with RUNS; summary.csv has every scene x run with finite
                                            errors; summary.md has a table row per scene and shown
                                            method, linking the scene's report.md
+  report_check.py runs DIR A B same|differ
+                                           run A's error columns equal run B's on every frame, or
+                                           differ in relMSE on some frame (asvgf report --run)
   report_check.py energy DIR               report.md's energy bias is a number for every run, and for
                                            runs without a history (raw, accum-*) the ratio of
                                            report.csv's mean to reference_mean over all frames, minus 1
@@ -241,6 +244,21 @@ def differ(a, b):
     print("report_check: ok: %d of %d shared rows differ in relMSE" % (changed, len(common)))
 
 
+def runs(directory, a, b, want):
+    rows = read_csv(directory)
+    columns = ["relmse", "ssim", "temporal", "mean"]
+    ra = {r["frame"]: [r[c] for c in columns] for r in rows if r["run"] == a}
+    rb = {r["frame"]: [r[c] for c in columns] for r in rows if r["run"] == b}
+    if not ra or not rb or sorted(ra) != sorted(rb):
+        fail("runs %s and %s are not both in report.csv over the same frames" % (a, b))
+    equal = [f for f in ra if ra[f] == rb[f]]
+    if want == "same" and len(equal) != len(ra):
+        fail("%s and %s differ on %d of %d frames" % (a, b, len(ra) - len(equal), len(ra)))
+    if want == "differ" and all(ra[f][0] == rb[f][0] for f in ra):
+        fail("%s and %s have the same relMSE on every frame: the settings changed nothing" % (a, b))
+    print("report_check: ok: %s and %s %s over %d frames" % (a, b, "equal" if want == "same" else "differ", len(ra)))
+
+
 def noise(same_dir, backend_dir, seed_dir):
     def means(directory):
         sums = {}
@@ -314,6 +332,8 @@ if __name__ == "__main__":
         timed(sys.argv[2])
     elif len(sys.argv) == 5 and sys.argv[1] == "scenes":
         scenes(sys.argv[2], sys.argv[3].split(","), sys.argv[4].split(","))
+    elif len(sys.argv) == 6 and sys.argv[1] == "runs" and sys.argv[5] in ("same", "differ"):
+        runs(sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5])
     elif len(sys.argv) == 3 and sys.argv[1] == "energy":
         energy(sys.argv[2])
     elif len(sys.argv) == 4 and sys.argv[1] in ("same", "differ"):
