@@ -103,7 +103,9 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
       "A-SVGF: how strongly the temporal gradient shortens the history (paper 1, measured best 4; 0: "
       "constant alpha)");
   add("--history-cap", d.history_cap, "history_cap", "Maximum history length in frames");
-  add("--history-tap", d.history_tap, "history_tap", "A-trous iteration whose output feeds the colour history");
+  add("--history-tap", d.history_tap, "history_tap",
+      "A-trous iteration whose output feeds the colour history (0: the first, SVGF; -1: none, the temporal "
+      "result unfiltered)");
 }
 
 std::optional<ImageSize> parse_size(std::string_view text) {

@@ -41,7 +41,9 @@ struct DenoiseSettings {
   AtrousKernel kernel = AtrousKernel::B3Spline;  // 5x5 B3 spline (SVGF); Box = the seed's 3x3 box
   int gradient_iterations = 3;                   // a-trous iterations over the 1/3-res gradient (Q2RTX)
   float history_cap = 32.0f;                     // max history length (Falcor SVGF; Q2RTX 256)
-  int history_tap = 0;                           // a-trous iteration whose output feeds the colour history (SVGF)
+  // The a-trous iteration whose output feeds the colour history (SVGF: 0, the first); -1: the
+  // temporal pass's own result, unfiltered (docs/quality.md).
+  int history_tap = 0;
   GradientSource gradient_source = GradientSource::Reshaded;  // A-SVGF's gradient (see above)
   // A-SVGF's anti-lag strength: lambda = min(1, antilag |delta^| / Delta^), the blend factor's and
   // the history length's response to the temporal gradient (the paper: 1; Q2RTX's flt_antilag_hf).
@@ -49,9 +51,9 @@ struct DenoiseSettings {
   // change with the unchanged light around it (docs/quality.md, "Anti-lag strength"). With the
   // reprojected gradient on noisy light 1 is better: its noise alone then shortens the history.
   float antilag = 4.0f;
-  float min_history = 4.0f;                                   // below this, variance is estimated spatially (SVGF)
-  float exposure = 1.0f;                                      // composite: multiplier before the tone curve
-  Tonemap tonemap = Tonemap::Aces;                            // composite: ACES fit (Narkowicz 2015)
+  float min_history = 4.0f;         // below this, variance is estimated spatially (SVGF)
+  float exposure = 1.0f;            // composite: multiplier before the tone curve
+  Tonemap tonemap = Tonemap::Aces;  // composite: ACES fit (Narkowicz 2015)
   // A-trous iterations over the specular signal, where diffuse and specular light are filtered
   // apart (--specular-split): Q2RTX filters its specular channel less than its diffuse one
   // (flt_atrous_spec 3 against flt_atrous_hf 4), as a reflection has detail that normals and depth

@@ -287,6 +287,40 @@ TEST_CASE("culling: an output nobody reads culls its pass, a still frame culls t
   CHECK(compiled2.culled[0].name == "atrous.5");
 }
 
+TEST_CASE(
+    "history_tap -1: the temporal pass writes the colour history, no a-trous iteration does, and the frames "
+    "run with no report") {
+  for (const int tap : {0, -1}) {
+    CAPTURE(tap);
+    Scene scene;
+    frame::FrameGraphBuilder builder(scene.device);
+    frame::FrameSettings s;
+    s.width = 16;
+    s.height = 16;
+    s.scene_moved = true;
+    s.denoise.history_tap = tap;
+    scene.gpu.update(4);
+    scene.gpu.update(5);
+    const auto g = builder.build(s, scene.gpu, scene.targets(16, 16));
+    std::vector<std::string> writers;
+    bool integrated = false;
+    for (const auto& p : g.passes())
+      for (const auto& a : p.accesses)
+        if (graph::writes(a.use) && !a.history && g.resource(a.resource).name == "color_history")
+          writers.push_back(p.name);
+    for (const auto& r : g.resources()) integrated = integrated || r.name == "integrated";
+    if (tap == -1) {
+      CHECK(writers == std::vector<std::string>{"temporal"});
+      CHECK_FALSE(integrated);  // the temporal result is the history itself
+    } else {
+      CHECK(writers == std::vector<std::string>{"atrous.1"});
+      CHECK(integrated);
+    }
+    run_frames(scene, s, 3, {}, 4);
+    CHECK_MESSAGE(scene.record.reports().empty(), messages(scene.record));
+  }
+}
+
 TEST_CASE("on a small known graph the derived barriers are exactly the expected ones") {
   CheckedRecord checked;
   hal::Device& device = checked.device;

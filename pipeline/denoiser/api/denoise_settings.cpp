@@ -67,8 +67,8 @@ const std::vector<Rule>& rules() {
       {{"history_cap", "--history-cap", "[1, 4096]"},
        [](const auto& s) { return in_closed(s.history_cap, 1, 4096); },
        [](const auto& s) { return text(s.history_cap); }},
-      {{"history_tap", "--history-tap", "0..atrous_iterations-1 (0 without a-trous iterations)"},
-       [](const auto& s) { return s.history_tap >= 0 && s.history_tap < std::max(1, s.atrous_iterations); },
+      {{"history_tap", "--history-tap", "-1..atrous_iterations-1 (-1 or 0 without a-trous iterations)"},
+       [](const auto& s) { return s.history_tap >= -1 && s.history_tap < std::max(1, s.atrous_iterations); },
        [](const auto& s) { return std::to_string(s.history_tap); }},
       {{"gradient_source", "--gradient-source", "reshaded or reprojected"},
        [](const auto& s) {

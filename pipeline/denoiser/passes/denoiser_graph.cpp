@@ -41,8 +41,10 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   c.color_history = graph.add_image(prefix + "color_history", w, h, F::RGBA16F, Lifetime::Persistent);
   c.moments = graph.add_image(prefix + "moments", w, h, F::RGBA16F, Lifetime::Persistent);
   const bool spatial = filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
-  // Without a spatial filter the temporal result is itself next frame's colour history.
-  c.integrated = spatial ? graph.add_image(prefix + "integrated", w, h, F::RGBA16F) : c.color_history;
+  // Without a spatial filter, or with history_tap -1, the temporal result is itself next frame's
+  // colour history (and no a-trous iteration writes one).
+  c.integrated =
+      spatial && s.history_tap >= 0 ? graph.add_image(prefix + "integrated", w, h, F::RGBA16F) : c.color_history;
   add_temporal(graph, pipelines,
                {signal, virtual_motion.value_or(in.motion), in.depth_normal, c.color_history, c.moments, c.integrated,
                 in.counters, gradient, prefix, virtual_motion.has_value()},
