@@ -2,8 +2,10 @@
 // asvgf::Denoiser takes them, and so do the frame, the tests and the command line).
 //
 // Defaults and their sources (the papers and implementations named; README "Denoiser parameters"):
-//   alpha 0.2, moments_alpha 0.2, atrous_iterations 5, sigma_z 1, sigma_n 128, sigma_l 4, B3-spline
-//   kernel, history_tap 0, min_history 4: SVGF paper (Schied et al. 2017) and Falcor's SVGF pass.
+//   alpha 0.2, moments_alpha 0.2, atrous_iterations 5, sigma_z 1, sigma_n 128, B3-spline kernel,
+//   history_tap 0, min_history 4: SVGF paper (Schied et al. 2017) and Falcor's SVGF pass.
+//   sigma_l 0, by the image's size: the paper's 4 up to 256x256 pixels, 8 from 512x512 (measured;
+//   see luminance_sigma).
 //   gradient_iterations 3: Q2RTX (a-trous over the gradient at 1/3 resolution).
 //   antilag 4: measured (the paper's is 1; Q2RTX's flt_antilag_hf 1 with a history shortened by
 //   (1 - alpha)^10).
@@ -32,12 +34,13 @@ enum class GradientSource : std::uint32_t { Reshaded = 0, Reprojected = 1 };
 enum class DenoiseMethod { Ema, Svgf, Asvgf };
 
 struct DenoiseSettings {
-  float alpha = 0.2f;                            // colour blend factor (SVGF; the seed's figures use 0.2)
-  float moments_alpha = 0.2f;                    // moments blend factor (SVGF)
-  int atrous_iterations = 5;                     // SVGF
-  float sigma_z = 1.0f;                          // depth edge-stopping (SVGF)
-  float sigma_n = 128.0f;                        // normal edge-stopping exponent (SVGF; Q2RTX 64)
-  float sigma_l = 4.0f;                          // luminance edge-stopping (SVGF; Q2RTX 16)
+  float alpha = 0.2f;          // colour blend factor (SVGF; the seed's figures use 0.2)
+  float moments_alpha = 0.2f;  // moments blend factor (SVGF)
+  int atrous_iterations = 5;   // SVGF
+  float sigma_z = 1.0f;        // depth edge-stopping (SVGF)
+  float sigma_n = 128.0f;      // normal edge-stopping exponent (SVGF; Q2RTX 64)
+  // Luminance edge-stopping (SVGF: 4; Q2RTX 16). 0: by the image's size (luminance_sigma).
+  float sigma_l = 0.0f;
   AtrousKernel kernel = AtrousKernel::B3Spline;  // 5x5 B3 spline (SVGF); Box = the seed's 3x3 box
   int gradient_iterations = 3;                   // a-trous iterations over the 1/3-res gradient (Q2RTX)
   float history_cap = 32.0f;                     // max history length (Falcor SVGF; Q2RTX 256)
@@ -60,6 +63,14 @@ struct DenoiseSettings {
   // do not predict; 4 measured best of 2-5 at 1080p (3 at 128 and 256 px).
   int specular_atrous_iterations = 4;
 };
+
+// The luminance edge-stopping a width x height image is filtered with: settings.sigma_l, or where it
+// is 0, 4 up to 256x256 pixels, rising with sqrt(width x height) to 8 at 512x512 and above. The
+// filter works in pixels, and the larger the image the less neighbouring pixels differ in signal
+// against their noise: on cornell/static (lavapipe) 4 is best at 256x256 (8: +27% relMSE), 6 at
+// 384x384, 8 at 512x512 (-13% against 4), and on the H200 at 1920x1080 8 is 36-42% better than 4
+// on every built-in scene (docs/quality.md, "sigma_l by the image's size").
+float luminance_sigma(const DenoiseSettings& settings, std::uint32_t width, std::uint32_t height);
 
 // Whether `method` with `settings` reads gradient samples the renderer re-shaded (A-SVGF with
 // GradientSource::Reshaded): the renderer then selects and re-shades them on frames where something moved.

@@ -130,8 +130,10 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
       ImageD got;
       harness.readback(g, out, &got);
       harness.run(g);
-      const ImageD want = ref::atrous(quantize(color, F::RGBA16F), quantize(dn, F::RGBA32F),
-                                      {1 << iteration, 0, settings.sigma_z, settings.sigma_n, settings.sigma_l});
+      const ImageD want =
+          ref::atrous(quantize(color, F::RGBA16F), quantize(dn, F::RGBA32F),
+                      {1 << iteration, 0, settings.sigma_z, settings.sigma_n,
+                       asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height))});
       const double m = magnitude(color);
       DENOISE_CHECK_CLOSE(compare(got, want, 4, [m](double v) { return fp16_ulp(v) + 1e-5 * m; }), "atrous");
     }

@@ -489,9 +489,11 @@ TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and
     const ImageD moments = random_moments(r, w, h);
     const ImageD albedo = random_color(r, w, h, 0.05, 1, 1);  // textured: a different albedo at every pixel
     const ImageD got = run_variance(*device, pipelines, integrated, moments, dn, albedo, settings);
-    const ImageD want = ref::variance(quantize(integrated, F::RGBA16F), quantize(moments, F::RGBA16F),
-                                      quantize(dn, F::RGBA32F), quantize(albedo, F::RGBA16F),
-                                      {settings.sigma_z, settings.sigma_n, settings.sigma_l, settings.min_history});
+    const ImageD want = ref::variance(
+        quantize(integrated, F::RGBA16F), quantize(moments, F::RGBA16F), quantize(dn, F::RGBA32F),
+        quantize(albedo, F::RGBA16F),
+        {settings.sigma_z, settings.sigma_n,
+         asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height)), settings.min_history});
     DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(80)), "variance");
   }
 }
@@ -585,9 +587,10 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
         harness.readback(g, out, &got);
         if (tap) harness.readback(g, *res.color_history, &history);
         harness.run(g);
-        const ImageD want = ref::atrous(
-            quantize(color, F::RGBA16F), quantize(dn, F::RGBA32F),
-            {1 << iteration, static_cast<int>(kernel), settings.sigma_z, settings.sigma_n, settings.sigma_l});
+        const ImageD want =
+            ref::atrous(quantize(color, F::RGBA16F), quantize(dn, F::RGBA32F),
+                        {1 << iteration, static_cast<int>(kernel), settings.sigma_z, settings.sigma_n,
+                         asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height))});
         DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(4)), "atrous");
         if (tap) CHECK(history.data == got.data);
       }
@@ -676,7 +679,8 @@ TEST_CASE(
     const ImageD dn_q = quantize(dn, F::RGBA32F);
     const FilterTexels t1 = unpack_filter_texels(got_first, dn_q), t2 = unpack_filter_texels(got_middle, dn_q);
     const auto params = [&](int iteration) {
-      return ref::AtrousParams{1 << iteration, 0, settings.sigma_z, settings.sigma_n, settings.sigma_l};
+      return ref::AtrousParams{1 << iteration, 0, settings.sigma_z, settings.sigma_n,
+                               asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height))};
     };
     // The first iteration estimates the variance (the variance pass's reference) as it loads its
     // tile, so it inherits that estimate's tolerance (the variance pass's test: fp16_tolerance(80));
@@ -686,7 +690,9 @@ TEST_CASE(
     const ImageD color_variance =
         quantize(ref::variance(quantize(color, F::RGBA16F), quantize(moments, F::RGBA16F), dn_q,
                                quantize(estimate_albedo, F::RGBA16F),
-                               {settings.sigma_z, settings.sigma_n, settings.sigma_l, settings.min_history}),
+                               {settings.sigma_z, settings.sigma_n,
+                                asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height)),
+                                settings.min_history}),
                  F::RGBA16F);
     DENOISE_CHECK_CLOSE(compare(t1.color, ref::atrous(color_variance, dn_q, params(0)), 4, fp16_tolerance(80)),
                         "first iteration");

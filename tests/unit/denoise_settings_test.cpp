@@ -34,6 +34,8 @@ TEST_CASE("denoiser settings: the defaults and every range's ends pass the check
       {"atrous_iterations", [](auto& s) { s.atrous_iterations = 0, s.history_tap = 0; }},
       {"atrous_iterations", [](auto& s) { s.atrous_iterations = 16; }},
       {"sigma_n", [](auto& s) { s.sigma_n = 0.0f; }},
+      {"sigma_l", [](auto& s) { s.sigma_l = 0.0f; }},
+      {"sigma_l", [](auto& s) { s.sigma_l = 1e-6f; }},
       {"gradient_iterations", [](auto& s) { s.gradient_iterations = 8; }},
       {"history_cap", [](auto& s) { s.history_cap = 1.0f; }},
       {"history_cap", [](auto& s) { s.history_cap = 4096.0f; }},
@@ -119,4 +121,20 @@ TEST_CASE("denoiser settings: every checked setting has a range, and every range
                              "gradient_iterations", "history_cap", "history_tap", "gradient_source", "antilag",
                              "min_history", "exposure", "tonemap", "specular_atrous_iterations"})
     CHECK_MESSAGE(names.count(member) == 1, member << " has no range");
+}
+
+TEST_CASE("luminance_sigma: a set sigma_l wins; 0 gives 4 up to 256x256, 8 from 512x512, between them with the size") {
+  DenoiseSettings s;
+  REQUIRE(s.sigma_l == 0.0f);  // the default is the size's
+  CHECK(luminance_sigma(s, 1, 1) == 4.0f);
+  CHECK(luminance_sigma(s, 64, 64) == 4.0f);
+  CHECK(luminance_sigma(s, 256, 256) == 4.0f);
+  CHECK(luminance_sigma(s, 384, 384) == doctest::Approx(6.0f));
+  CHECK(luminance_sigma(s, 512, 512) == 8.0f);
+  CHECK(luminance_sigma(s, 1920, 1080) == 8.0f);
+  CHECK(luminance_sigma(s, 16384, 16384) == 8.0f);
+  CHECK(luminance_sigma(s, 1024, 256) == 8.0f);  // by the pixel count: sqrt(1024 x 256) = 512
+  s.sigma_l = 3.0f;
+  CHECK(luminance_sigma(s, 1920, 1080) == 3.0f);
+  CHECK(luminance_sigma(s, 64, 64) == 3.0f);
 }

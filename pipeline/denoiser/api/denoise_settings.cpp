@@ -55,8 +55,8 @@ const std::vector<Rule>& rules() {
       {{"sigma_n", "--sigma-n", "[0, inf), finite"},
        [](const auto& s) { return non_negative_finite(s.sigma_n); },
        [](const auto& s) { return text(s.sigma_n); }},
-      {{"sigma_l", "--sigma-l", "(0, inf), finite"},
-       [](const auto& s) { return positive_finite(s.sigma_l); },
+      {{"sigma_l", "--sigma-l", "[0, inf), finite (0: by the image's size)"},
+       [](const auto& s) { return non_negative_finite(s.sigma_l); },
        [](const auto& s) { return text(s.sigma_l); }},
       {{"kernel", "--kernel", "b3spline or box"},
        [](const auto& s) { return s.kernel == AtrousKernel::B3Spline || s.kernel == AtrousKernel::Box; },
@@ -109,6 +109,12 @@ std::string_view setting_range(std::string_view setting) {
   for (const auto& r : setting_ranges())
     if (setting == r.setting) return r.range;
   return {};
+}
+
+float luminance_sigma(const DenoiseSettings& settings, std::uint32_t width, std::uint32_t height) {
+  if (settings.sigma_l > 0.0f) return settings.sigma_l;
+  const double side = std::sqrt(double(width) * double(height));
+  return float(4.0 * std::clamp(side / 256.0, 1.0, 2.0));
 }
 
 std::string SettingProblem::message() const {

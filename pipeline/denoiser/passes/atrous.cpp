@@ -72,9 +72,16 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
       throw std::invalid_argument("add_atrous: '" + other.name + "' does not match depth_normal's " +
                                   std::to_string(decl.width) + "x" + std::to_string(decl.height));
   }
-  const Uniforms u{
-      decl.width, decl.height,   1 << iteration, static_cast<std::uint32_t>(s.kernel), s.sigma_z, s.sigma_n,
-      s.sigma_l,  s.min_history, s.exposure,     static_cast<std::uint32_t>(s.tonemap)};
+  const Uniforms u{decl.width,
+                   decl.height,
+                   1 << iteration,
+                   static_cast<std::uint32_t>(s.kernel),
+                   s.sigma_z,
+                   s.sigma_n,
+                   luminance_sigma(s, decl.width, decl.height),
+                   s.min_history,
+                   s.exposure,
+                   static_cast<std::uint32_t>(s.tonemap)};
   std::vector<Binding> bindings{{first_packed ? "integrated" : "color_in", r.color_in}};
   if (composite)
     bindings.insert(bindings.end(), {{"albedo", r.composite->albedo},

@@ -15,7 +15,8 @@ using Uniforms = asvgf::shaders::variance_uniforms::Params;
 graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipelines, const VarianceResources& r,
                                 const DenoiseSettings& s) {
   const auto& decl = graph.resource(r.color_variance);
-  const Uniforms u{decl.width, decl.height, s.sigma_z, s.sigma_n, s.sigma_l, s.min_history};
+  const Uniforms u{decl.width,   decl.height, s.sigma_z, s.sigma_n, luminance_sigma(s, decl.width, decl.height),
+                   s.min_history};
   const hal::ShaderInfo& shader = asvgf::shaders::variance;
   const auto pipeline = pipelines.get<Uniforms>(shader);
   return add_compute_pass(graph, r.prefix + "variance", shader, pipeline,
