@@ -24,7 +24,10 @@ std::vector<report::RunSpec> builtin_runs(std::uint32_t max_accumulation_spp) {
   auto none = [](report::RunSpec&) {};
   add("raw", "1 spp, no filter", Method::Raw, none);
   add("ema-0.2", "EMA, constant α 0.2, no spatial filter", Method::Ema, none);
-  add("ema-0.05", "EMA, constant α 0.05 (ghosting)", Method::Ema, [](report::RunSpec& s) { s.denoise.alpha = 0.05f; });
+  add("ema-0.05", "EMA, constant α 0.05 (ghosting)", Method::Ema, [](report::RunSpec& s) {
+    s.denoise.alpha = 0.05f;
+    s.summarised = false;
+  });
   add("svgf", "SVGF: constant α 0.2, 5 à-trous iterations (B3 5x5)", Method::Svgf, none);
   add("asvgf", "A-SVGF: adaptive α, 5 à-trous iterations (B3 5x5)", Method::Asvgf, none);
   add("asvgf-reproj", "A-SVGF, gradient from reprojected noisy luminance (no re-shading; Q2RTX's LF)", Method::Asvgf,
@@ -36,10 +39,12 @@ std::vector<report::RunSpec> builtin_runs(std::uint32_t max_accumulation_spp) {
   add("asvgf-box9", "A-SVGF, the seed's 3x3 box kernel, 9 iterations", Method::Asvgf, [](report::RunSpec& s) {
     s.denoise.kernel = asvgf::AtrousKernel::Box;
     s.denoise.atrous_iterations = 9;
+    s.summarised = false;
   });
   add("asvgf-box15", "A-SVGF, the seed's 3x3 box kernel, 15 iterations", Method::Asvgf, [](report::RunSpec& s) {
     s.denoise.kernel = asvgf::AtrousKernel::Box;
     s.denoise.atrous_iterations = 15;
+    s.summarised = false;
   });
   for (std::uint32_t spp = 1; spp <= max_accumulation_spp; spp *= 2)
     add("accum-" + std::to_string(spp) + "spp", "plain accumulation, " + std::to_string(spp) + " spp a frame",

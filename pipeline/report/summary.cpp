@@ -31,7 +31,7 @@ CurveHit matching_accumulation(const ReportData& data, double relmse) {
 }
 
 bool summary_run(const RunSpec& spec) {
-  return !spec.accumulation() && spec.name.find("box") == std::string::npos && spec.name != "ema-0.05";
+  return !spec.accumulation() && spec.summarised;
 }
 
 std::string summary_markdown(const std::vector<SceneReport>& scenes) {

@@ -19,7 +19,8 @@ struct SceneReport {
 // (log-log interpolation; below_range: lower than every accumulation's error).
 CurveHit matching_accumulation(const ReportData& data, double relmse);
 
-// The runs the summary table shows (the methods, not their variants; accumulation enters as K).
+// The runs the summary table shows: the methods, the built-in variants flagged `summarised` and every
+// --run (accumulation enters as K).
 bool summary_run(const RunSpec& spec);
 
 std::string summary_markdown(const std::vector<SceneReport>& scenes);

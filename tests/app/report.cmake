@@ -30,9 +30,9 @@ asvgf_add_cli_test("asvgf report --timing separate times every frame in a back-t
 asvgf_add_cli_test("asvgf report on the static room gives every run an energy bias (ema-0.05 saturates after 20 of 24 frames), as report.csv's means say" LABEL app EXIT 0
                    MATCH "report_check: ok: energy bias of 12 runs"
                    COMMAND bash -c "rm -rf ${report_dir}/energy && $<TARGET_FILE:asvgf> report --size 24x24 --frames 24 --reference-spp 32 --max-accumulation-spp 4 --quiet --animation static --out ${report_dir}/energy && ${report_check} energy ${report_dir}/energy")
-asvgf_add_cli_test("asvgf report --scenes all reports every built-in scene and a summary table over them" LABEL app EXIT 0
-                   MATCH "report_check: ok: 4 scenes x 4 runs in summary.csv, 8 table rows"
-                   COMMAND bash -c "rm -rf ${report_dir}/scenes && $<TARGET_FILE:asvgf> report --scenes all --size 24x24 --frames 6 --reference-spp 16 --max-accumulation-spp 4 --methods raw,asvgf,accum --quiet --out ${report_dir}/scenes && ${report_check} scenes ${report_dir}/scenes cornell,glossy,textured,many raw,asvgf,accum-1spp,accum-4spp")
+asvgf_add_cli_test("asvgf report --scenes all reports every built-in scene and a summary table over them, --run's runs included whatever their name" LABEL app EXIT 0
+                   MATCH "report_check: ok: 4 scenes x 5 runs in summary.csv, 12 table rows"
+                   COMMAND bash -c "rm -rf ${report_dir}/scenes && $<TARGET_FILE:asvgf> report --scenes all --size 24x24 --frames 6 --reference-spp 16 --max-accumulation-spp 4 --methods raw,asvgf,accum --run 'own-box=asvgf --kernel box' --quiet --out ${report_dir}/scenes && ${report_check} scenes ${report_dir}/scenes cornell,glossy,textured,many raw,asvgf,own-box,accum-1spp,accum-4spp")
 asvgf_add_cli_test("asvgf report --scenes rejects an unknown scene with exit 2, naming it and the valid ones" LABEL app EXIT 2
                    MATCH "--scenes.*'kitchen' is neither a built-in scene \\(cornell, glossy, textured, many"
                    COMMAND ${asvgf} report --scenes cornell,kitchen --out ${report_dir}/never)
