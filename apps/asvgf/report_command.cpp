@@ -186,9 +186,10 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
   if (std::filesystem::path(o.scene.scene).extension() == ".json") inputs.emplace_back("--scene", o.scene.scene);
   for (const auto& t : scene.textures) inputs.emplace_back("--scene (a texture)", t.name);
   refuse_folder_holding_inputs("--out", dir, inputs);
-  // Without glossy materials there is one signal anyway: a split run would repeat its twin.
+  // Without glossy materials there is one signal anyway: the built-in split run would repeat its
+  // twin (a --run asking for the split is rendered all the same).
   if (std::none_of(scene.materials.begin(), scene.materials.end(), [](const auto& m) { return m.glossy(); }))
-    std::erase_if(specs, [](const report::RunSpec& s) { return s.specular_split; });
+    std::erase_if(specs, [](const report::RunSpec& s) { return s.specular_split && !s.own; });
   if (specs.empty())
     throw CLI::ValidationError(
         "--methods", "the runs chosen need glossy materials (asvgf-split), and scene '" + scene.name + "' has none");

@@ -101,6 +101,7 @@ report::RunSpec parse_run(const std::string& text, const std::vector<report::Run
   words >> method;
   report::RunSpec spec;
   spec.name = name;
+  spec.own = true;
   if (method == "raw") {
     spec.method = frame::Method::Raw;
   } else if (method == "ema") {

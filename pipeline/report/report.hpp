@@ -28,6 +28,7 @@ struct RunSpec {
   asvgf::DenoiseSettings denoise;
   bool demodulate = true;       // false: the denoiser filters radiance, albedo included (--no-demodulation)
   bool specular_split = false;  // glossy scenes: diffuse and specular filtered apart (--specular-split)
+  bool own = false;             // from --run: rendered on every scene, as asked
   bool summarised = true;       // a row in --scenes' summary table (not the built-in variants' box and ema-0.05)
   bool accumulation() const { return method == frame::Method::Reference; }
   // Frames until the temporal history is saturated (alpha_eff = max(alpha, 1/n) reaches alpha);

@@ -39,9 +39,9 @@ asvgf_add_cli_test("asvgf report --scenes rejects an unknown scene with exit 2, 
 asvgf_add_cli_test("asvgf report --scenes refuses two scenes that would share a report folder, exit 2" LABEL app EXIT 2
                    MATCH "--scenes.*would both write to cornell/"
                    COMMAND ${asvgf} report --scenes cornell,glossy,cornell --out ${report_dir}/never)
-asvgf_add_cli_test("asvgf report --run adds runs of one's own settings: asvgf's defaults repeat asvgf's numbers, --sigma-l 8 changes them" LABEL app EXIT 0
+asvgf_add_cli_test("asvgf report --run adds runs of one's own settings: asvgf's defaults repeat asvgf's numbers, --sigma-l 8 changes them, --specular-split on the matte room is rendered as its twin" LABEL app EXIT 0
                    MATCH "ok: asvgf and own-sl8 differ"
-                   COMMAND bash -c "rm -rf ${report_dir}/run && $<TARGET_FILE:asvgf> report --size 24x24 --frames 6 --reference-spp 16 --max-accumulation-spp 2 --quiet --methods asvgf,accum --run own-default=asvgf --run 'own-sl8=asvgf --sigma-l 8' --out ${report_dir}/run && ${report_check} check ${report_dir}/run asvgf,accum-1spp,accum-2spp,own-default,own-sl8 && ${report_check} runs ${report_dir}/run asvgf own-default same && ${report_check} runs ${report_dir}/run asvgf own-sl8 differ")
+                   COMMAND bash -c "rm -rf ${report_dir}/run && $<TARGET_FILE:asvgf> report --size 24x24 --frames 6 --reference-spp 16 --max-accumulation-spp 2 --quiet --methods asvgf,accum --run own-default=asvgf --run 'own-sl8=asvgf --sigma-l 8' --run 'own-split=asvgf --specular-split' --out ${report_dir}/run && ${report_check} check ${report_dir}/run asvgf,accum-1spp,accum-2spp,own-default,own-sl8,own-split && ${report_check} runs ${report_dir}/run asvgf own-default same && ${report_check} runs ${report_dir}/run asvgf own-split same && ${report_check} runs ${report_dir}/run asvgf own-sl8 differ")
 asvgf_add_cli_test("asvgf report --run refuses a setting outside its range with exit 2, naming the run and the range" LABEL app EXIT 2
                    MATCH "--run: 'x=asvgf --alpha 2': --alpha: alpha \\(--alpha\\) is 2, valid: \\(0, 1"
                    COMMAND ${asvgf} report --methods raw --run "x=asvgf --alpha 2" --out ${report_dir}/never)
