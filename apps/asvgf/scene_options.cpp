@@ -15,7 +15,9 @@
 
 namespace asvgf::cli {
 
-std::string chosen_backend(const std::string& option) {
+namespace {
+
+std::string backend_named(const std::string& option) {
   if (!option.empty()) return option;
   const char* env = std::getenv("ASVGF_BACKEND");
   if (!env || !*env) return hal::registry::default_backend().name;
@@ -25,6 +27,18 @@ std::string chosen_backend(const std::string& option) {
   } catch (const hal::Error&) {
     throw CLI::ValidationError("ASVGF_BACKEND", "'" + value + "' is not one of " + hal::registry::names());
   }
+}
+
+}  // namespace
+
+std::string chosen_backend(const std::string& option) {
+  const std::string name = backend_named(option);
+  // The chosen backend's own variables (ASVGF_GL_SHADERS) are bad input like ASVGF_BACKEND's.
+  const auto& backend = hal::registry::backend(name);
+  if (backend.environment_problem)
+    if (const std::string problem = backend.environment_problem(); !problem.empty())
+      throw CLI::ValidationError(problem);
+  return name;
 }
 
 bool default_backend_chosen(const std::string& option) {

@@ -53,7 +53,8 @@ constexpr std::uint32_t kMaxImageSide = 16384;
 std::optional<ImageSize> parse_size(std::string_view text);
 // parse_size, or CLI::ValidationError naming `option`.
 ImageSize parse_size_option(const std::string& option, const std::string& text);
-// --backend, else $ASVGF_BACKEND, else the registry's default backend.
+// --backend, else $ASVGF_BACKEND, else the registry's default backend. Throws CLI::ValidationError
+// (exit 2) for an unknown ASVGF_BACKEND or a malformed variable the chosen backend reads.
 std::string chosen_backend(const std::string& option);
 // Whether that is the registry's default backend (commands leave it out of what they print).
 bool default_backend_chosen(const std::string& option);

@@ -18,6 +18,7 @@ std::vector<Backend> hal_gl_backends() {
       options.make_current = o.make_current;
       return hal::gl::create_device(options);
     };
+    b.environment_problem = [] { return hal::gl::environment_problem(); };
     return b;
   };
   return {entry("gl", "OpenGL 4.5 compute (software BVH)", hal::gl::Flavour::Gl, Presentation::OpenGlContext),

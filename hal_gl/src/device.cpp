@@ -77,10 +77,10 @@ bool spirv_measured_faster(const std::string& vendor) {
 // extension and the driver is one spirv_measured_faster names. OpenGL ES has no SPIR-V path: it
 // always compiles ESSL.
 bool spirv_shaders(bool es, const std::string& adapter, const std::string& vendor) {
+  if (const std::string problem = environment_problem(); !problem.empty())
+    throw Error(ErrorKind::InvalidUsage, "", problem);
   const char* chosen = std::getenv("ASVGF_GL_SHADERS");
   const std::string choice = chosen ? chosen : "";
-  if (!choice.empty() && choice != "glsl" && choice != "spirv")
-    throw Error(ErrorKind::InvalidUsage, "ASVGF_GL_SHADERS", "is '" + choice + "'; valid: glsl, spirv");
   if (es) return false;
   const bool available = epoxy_has_gl_extension("GL_ARB_gl_spirv");
   if (choice.empty()) return available && spirv_measured_faster(vendor);
@@ -550,6 +550,13 @@ void GlDevice::timestamp(TimerQueriesHandle handle, std::uint32_t query) {
 
 std::unique_ptr<hal::Device> create_device(const DeviceOptions& options) {
   return std::make_unique<GlDevice>(options);
+}
+
+std::string environment_problem() {
+  const char* chosen = std::getenv("ASVGF_GL_SHADERS");
+  const std::string choice = chosen ? chosen : "";
+  if (choice.empty() || choice == "glsl" || choice == "spirv") return "";
+  return "ASVGF_GL_SHADERS is '" + choice + "'; valid: glsl, spirv";
 }
 
 }  // namespace hal::gl

@@ -16,6 +16,9 @@ asvgf_add_cli_test("asvgf-demo rejects a malformed --resize-at with exit 2" LABE
                    COMMAND ${demo} --resize-at 3 64by64)
 asvgf_add_cli_test("asvgf-demo rejects an unknown --view with exit 2" LABEL app EXIT 2 MATCH "--view"
                    COMMAND ${demo} --view sideways)
+asvgf_add_cli_test("asvgf-demo --backend gl with a malformed ASVGF_GL_SHADERS exits 2 before opening a window, naming it" LABEL app EXIT 2
+                   MATCH "ASVGF_GL_SHADERS is 'bogus'; valid: glsl, spirv" ENV ASVGF_GL_SHADERS=bogus
+                   COMMAND ${demo} --backend gl --frames 1)
 
 find_program(ASVGF_XVFB_RUN xvfb-run)
 if(NOT ASVGF_XVFB_RUN)

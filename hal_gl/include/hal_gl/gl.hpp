@@ -32,6 +32,10 @@ struct DeviceOptions {
 // the context cannot be created (naming the EGL error), Unsupported when the context lacks compute.
 std::unique_ptr<hal::Device> create_device(const DeviceOptions& options = {});
 
+// What is wrong with ASVGF_GL_SHADERS (unset, glsl or spirv), naming it and the valid values; ""
+// when nothing is. create_device throws hal::Error(InvalidUsage) with the same.
+std::string environment_problem();
+
 // Shows `image` (in State::Present, created with CopySrc usage, a float or unorm format) on the
 // default framebuffer of the device's adopted context, scaled to width x height with a linear
 // blit, its first row at the top. The caller swaps the buffers. Throws InvalidUsage when `device`

@@ -45,6 +45,10 @@ struct Backend {
   std::function<std::unique_ptr<Device>(const OpenOptions&)> open;  // throws hal::Error (NoDevice, ...)
   // Every adapter the backend sees (empty function: the backend has one, what open() gives).
   std::function<std::vector<AdapterListing>()> list_adapters;
+  // What is wrong with the environment variables the backend reads, naming the variable and its
+  // valid values; "" when nothing is (empty function: it reads none). open() refuses the same with
+  // hal::Error(InvalidUsage); the tools ask first, to report it as bad input.
+  std::function<std::string()> environment_problem;
 };
 
 // Every backend of this build, the default first.
