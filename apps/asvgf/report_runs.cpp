@@ -102,17 +102,11 @@ report::RunSpec parse_run(const std::string& text, const std::vector<report::Run
   report::RunSpec spec;
   spec.name = name;
   spec.own = true;
-  if (method == "raw") {
-    spec.method = frame::Method::Raw;
-  } else if (method == "ema") {
-    spec.method = frame::Method::Ema;
-  } else if (method == "svgf") {
-    spec.method = frame::Method::Svgf;
-  } else if (method == "asvgf") {
-    spec.method = frame::Method::Asvgf;
-  } else {
+  // Plain accumulation has its own runs (accum-<spp>), with no denoiser settings to vary.
+  const auto parsed = frame::method_from_string(method);
+  if (!parsed || *parsed == frame::Method::Reference)
     throw refuse("the method '" + method + "' is not raw, ema, svgf or asvgf");
-  }
+  spec.method = *parsed;
   std::string options, word;
   while (words >> word) options += (options.empty() ? "" : " ") + word;
   // The options and their checks are `asvgf render`'s: one list, one range check.

@@ -65,6 +65,12 @@ GLenum image_access(Access access) {
   return GL_READ_WRITE;
 }
 
+// ASVGF_GL_SHADERS as set ("" when unset).
+std::string shaders_variable() {
+  const char* chosen = std::getenv("ASVGF_GL_SHADERS");
+  return chosen ? chosen : "";
+}
+
 // Drivers that run our programs faster from SPIR-V than from GLSL, measured (docs/performance.md):
 // NVIDIA's (H200, 1080p frame 6.6 against 7.5 ms, denoiser 0.648 against 0.672). Mesa's llvmpipe
 // runs the OpenGL suites slower from SPIR-V (78 s of CPU against 20); other drivers are unmeasured.
@@ -79,8 +85,7 @@ bool spirv_measured_faster(const std::string& vendor) {
 bool spirv_shaders(bool es, const std::string& adapter, const std::string& vendor) {
   if (const std::string problem = environment_problem(); !problem.empty())
     throw Error(ErrorKind::InvalidUsage, "", problem);
-  const char* chosen = std::getenv("ASVGF_GL_SHADERS");
-  const std::string choice = chosen ? chosen : "";
+  const std::string choice = shaders_variable();
   if (es) return false;
   const bool available = epoxy_has_gl_extension("GL_ARB_gl_spirv");
   if (choice.empty()) return available && spirv_measured_faster(vendor);
@@ -553,8 +558,7 @@ std::unique_ptr<hal::Device> create_device(const DeviceOptions& options) {
 }
 
 std::string environment_problem() {
-  const char* chosen = std::getenv("ASVGF_GL_SHADERS");
-  const std::string choice = chosen ? chosen : "";
+  const std::string choice = shaders_variable();
   if (choice.empty() || choice == "glsl" || choice == "spirv") return "";
   return "ASVGF_GL_SHADERS is '" + choice + "'; valid: glsl, spirv";
 }
