@@ -114,9 +114,7 @@ report::RunSpec parse_run(const std::string& text, const std::vector<report::Run
   CLI::App parser("--run options", "--run");
   add_denoise_options(parser, scene);
   parser.add_flag("--no-demodulation", scene.no_demodulation, "Filter radiance, albedo included");
-  parser.add_flag("--specular-split", scene.specular_split, "Glossy scenes: diffuse and specular light apart");
-  parser.add_option("--specular-atrous-iterations", scene.denoise.specular_atrous_iterations,
-                    "A-trous iterations over the specular signal");
+  add_specular_options(parser, scene);
   parser.allow_extras(false);
   try {
     parser.parse(options, false);

@@ -80,14 +80,23 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
       ->capture_default_str();
   cmd.add_flag("--no-demodulation", o.no_demodulation,
                "Denoise radiance with the albedo in it instead of radiance / albedo (does the filter blur textures?)");
+  add_specular_options(cmd, o);
+  add_denoise_options(cmd, o);
+}
+
+void add_specular_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_flag("--specular-split", o.specular_split,
                "On glossy scenes, denoise diffuse and specular light apart, each with its own histories "
                "(ema, svgf, asvgf with the re-shaded gradient; not with --aovs)");
-  cmd.add_option("--specular-atrous-iterations", o.denoise.specular_atrous_iterations,
-                 "A-trous iterations over the specular signal (--specular-split; Q2RTX 3); " +
-                     std::string(setting_range("specular_atrous_iterations")))
-      ->capture_default_str();
-  add_denoise_options(cmd, o);
+  auto add = [&](const char* option, auto& value, const char* setting, const std::string& what) {
+    cmd.add_option(option, value, what + "; " + std::string(setting_range(setting)))->capture_default_str();
+  };
+  add("--specular-atrous-iterations", o.denoise.specular_atrous_iterations, "specular_atrous_iterations",
+      "A-trous iterations over the specular signal (--specular-split; Q2RTX 3)");
+  add("--specular-sigma-l", o.denoise.specular_sigma_l, "specular_sigma_l",
+      "Luminance edge-stopping of the specular signal (--specular-split)");
+  add("--specular-alpha", o.denoise.specular_alpha, "specular_alpha",
+      "Temporal blend factor of the specular signal (--specular-split)");
 }
 
 void add_denoise_options(CLI::App& cmd, SceneOptions& o) {

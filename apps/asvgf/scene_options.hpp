@@ -36,6 +36,8 @@ struct SceneOptions {
 void add_scene_options(CLI::App& cmd, SceneOptions& options);
 // The denoiser parameters alone (--alpha ... --history-tap, --kernel), part of add_scene_options.
 void add_denoise_options(CLI::App& cmd, SceneOptions& options);
+// --specular-split and the specular chain's settings (part of add_scene_options).
+void add_specular_options(CLI::App& cmd, SceneOptions& options);
 // --backend --device --validation (part of add_scene_options).
 void add_device_options(CLI::App& cmd, SceneOptions& options);
 // --backend alone (commands with their own scene options, e.g. report).

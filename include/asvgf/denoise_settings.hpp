@@ -11,6 +11,7 @@
 //   (1 - alpha)^10).
 //   history_cap 32: Falcor's SVGF (Q2RTX caps at 256 with alpha_min 0.02, moments alpha 0.01).
 //   specular_atrous_iterations 4: measured on `glossy` at 1080p (Q2RTX 3; docs/performance.md).
+//   specular_sigma_l 0, specular_alpha 0: the diffuse chain's.
 #pragma once
 
 #include <cstdint>
@@ -62,6 +63,12 @@ struct DenoiseSettings {
   // (flt_atrous_spec 3 against flt_atrous_hf 4), as a reflection has detail that normals and depth
   // do not predict; 4 measured best of 2-5 at 1080p (3 at 128 and 256 px).
   int specular_atrous_iterations = 4;
+  // The specular chain's luminance edge-stopping and blend factor (--specular-split); 0: the diffuse
+  // chain's (sigma_l by the image's size, alpha). A reflection's light is several times noisier than
+  // the diffuse bounce (docs/quality.md, "Glossy"): these let the specular signal be filtered and
+  // accumulated harder than the diffuse one without touching it.
+  float specular_sigma_l = 0.0f;
+  float specular_alpha = 0.0f;
 };
 
 // The luminance edge-stopping a width x height image is filtered with: settings.sigma_l, or where it

@@ -47,6 +47,8 @@ TEST_CASE("denoiser settings: the defaults and every range's ends pass the check
       {"min_history", [](auto& s) { s.min_history = 0.0f; }},
       {"exposure", [](auto& s) { s.exposure = 0.0f; }},
       {"specular_atrous_iterations", [](auto& s) { s.specular_atrous_iterations = 0; }},
+      {"specular_sigma_l", [](auto& s) { s.specular_sigma_l = 32.0f; }},
+      {"specular_alpha", [](auto& s) { s.specular_alpha = 1.0f; }},
   };
   for (const auto& c : good) {
     DenoiseSettings s;
@@ -95,6 +97,12 @@ TEST_CASE(
       {"exposure", [](auto& s) { s.exposure = -1.0f; }},
       {"tonemap", [](auto& s) { s.tonemap = static_cast<Tonemap>(5); }},
       {"specular_atrous_iterations", [](auto& s) { s.specular_atrous_iterations = 17; }},
+      {"specular_sigma_l", [](auto& s) { s.specular_sigma_l = -1.0f; }},
+      {"specular_sigma_l", [](auto& s) { s.specular_sigma_l = kNan; }},
+      {"specular_sigma_l", [](auto& s) { s.specular_sigma_l = kInf; }},
+      {"specular_alpha", [](auto& s) { s.specular_alpha = -0.1f; }},
+      {"specular_alpha", [](auto& s) { s.specular_alpha = 1.5f; }},
+      {"specular_alpha", [](auto& s) { s.specular_alpha = kNan; }},
   };
   for (const auto& c : bad) {
     DenoiseSettings s;
@@ -117,9 +125,10 @@ TEST_CASE("denoiser settings: every checked setting has a range, and every range
     CHECK(std::string(r.range).size() > 0);
   }
   // Every member of DenoiseSettings.
-  for (const char* member : {"alpha", "moments_alpha", "atrous_iterations", "sigma_z", "sigma_n", "sigma_l", "kernel",
-                             "gradient_iterations", "history_cap", "history_tap", "gradient_source", "antilag",
-                             "min_history", "exposure", "tonemap", "specular_atrous_iterations"})
+  for (const char* member :
+       {"alpha", "moments_alpha", "atrous_iterations", "sigma_z", "sigma_n", "sigma_l", "kernel", "gradient_iterations",
+        "history_cap", "history_tap", "gradient_source", "antilag", "min_history", "exposure", "tonemap",
+        "specular_atrous_iterations", "specular_sigma_l", "specular_alpha"})
     CHECK_MESSAGE(names.count(member) == 1, member << " has no range");
 }
 

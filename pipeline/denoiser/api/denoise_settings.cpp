@@ -90,6 +90,12 @@ const std::vector<Rule>& rules() {
       {{"specular_atrous_iterations", "--specular-atrous-iterations", "0..16"},
        [](const auto& s) { return s.specular_atrous_iterations >= 0 && s.specular_atrous_iterations <= 16; },
        [](const auto& s) { return std::to_string(s.specular_atrous_iterations); }},
+      {{"specular_sigma_l", "--specular-sigma-l", "[0, inf), finite (0: sigma_l's)"},
+       [](const auto& s) { return non_negative_finite(s.specular_sigma_l); },
+       [](const auto& s) { return text(s.specular_sigma_l); }},
+      {{"specular_alpha", "--specular-alpha", "[0, 1] (0: alpha's)"},
+       [](const auto& s) { return in_closed(s.specular_alpha, 0, 1); },
+       [](const auto& s) { return text(s.specular_alpha); }},
   };
   return all;
 }

@@ -157,6 +157,8 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
       DenoiseSettings specular = s;
       specular.atrous_iterations = s.specular_atrous_iterations;
       specular.history_tap = std::min(s.history_tap, std::max(0, s.specular_atrous_iterations - 1));
+      if (s.specular_sigma_l > 0.0f) specular.sigma_l = s.specular_sigma_l;
+      if (s.specular_alpha > 0.0f) specular.alpha = s.specular_alpha;
       out.specular = add_chain(graph, pipelines, *in.specular, *in.specular_albedo, "specular.", in, out.gradient,
                                specular, filter, std::nullopt, in.specular_motion)
                          .filtered;
