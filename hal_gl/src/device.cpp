@@ -144,6 +144,7 @@ GlDevice::~GlDevice() {
     glDeleteBuffers(1, &uniform_buffer_);
     if (readback_buffer_) glDeleteBuffers(1, &readback_buffer_);
     glDeleteFramebuffers(1, &read_framebuffer_);
+    es_clear_.reset();
     if (debug_output_) glDebugMessageCallback(nullptr, nullptr);
   } catch (...) {
     // A context that cannot be made current has nothing left to release.
@@ -522,11 +523,17 @@ void GlDevice::clear_buffer(BufferHandle handle, std::uint32_t word) {
     // Filled by the GPU: the upload below took about 0.6 s a GB on the H200, and a buffer the host
     // filled copied at a third of the bandwidth afterwards (docs/performance.md).
     glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, 0, bytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &word);
-  } else {  // OpenGL ES has no buffer clear
-    std::vector<std::uint32_t> words(b.desc.size / 4, word);
-    glBufferSubData(GL_COPY_WRITE_BUFFER, 0, bytes, words.data());
+    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    return;
   }
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  es_clear().buffer(b.buffer, b.desc.size / 4, word);  // OpenGL ES has no buffer clear
+  check_gl(b.desc.name, "clear_buffer");
+}
+
+EsClear& GlDevice::es_clear() {
+  if (!es_clear_) es_clear_ = std::make_unique<EsClear>();
+  return *es_clear_;
 }
 
 void GlDevice::clear_image(ImageHandle handle, std::array<float, 4> value) {
@@ -536,6 +543,10 @@ void GlDevice::clear_image(ImageHandle handle, std::array<float, 4> value) {
     glClearTexImage(i.texture, 0, i.format.format, i.format.type, texel.data());
     return;
   }
+  const bool cleared = es_clear().image(i.texture, i.format.internal, value);
+  check_gl(i.desc.name, "clear_image");
+  if (cleared) return;
+  // Not colour-renderable in this ES context (e.g. float formats without GL_EXT_color_buffer_float).
   const auto texels = texels_of(i.desc.format, value, std::size_t{i.desc.width} * i.desc.height);
   glBindTexture(GL_TEXTURE_2D, i.texture);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, static_cast<GLsizei>(i.desc.width), static_cast<GLsizei>(i.desc.height),
