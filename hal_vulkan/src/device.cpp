@@ -1,5 +1,6 @@
 // Device creation (adapter choice, extensions and features), submission, waiting, destruction.
 #include "device.hpp"
+#include "pipeline_stats.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -14,7 +15,8 @@ namespace hal::vulkan {
 namespace {
 
 std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return text;
 }
 
@@ -25,11 +27,16 @@ bool is_index(const std::string& text) {
 
 int type_rank(DeviceType type) {
   switch (type) {
-    case DeviceType::DiscreteGpu: return 0;
-    case DeviceType::IntegratedGpu: return 1;
-    case DeviceType::VirtualGpu: return 2;
-    case DeviceType::Cpu: return 3;
-    default: return 4;
+    case DeviceType::DiscreteGpu:
+      return 0;
+    case DeviceType::IntegratedGpu:
+      return 1;
+    case DeviceType::VirtualGpu:
+      return 2;
+    case DeviceType::Cpu:
+      return 3;
+    default:
+      return 4;
   }
 }
 
@@ -135,7 +142,8 @@ void VulkanDevice::create_shared_objects() {
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
   pool_info.queueFamilyIndex = queue_family_;
-  check_result(vkCreateCommandPool(device_, &pool_info, nullptr, &transfer_pool_), "vkCreateCommandPool", "transfer pool");
+  check_result(vkCreateCommandPool(device_, &pool_info, nullptr, &transfer_pool_), "vkCreateCommandPool",
+               "transfer pool");
 
   // The upload ring: uniform data of dispatches and TLAS instance arrays, written at record time.
   ring_.size = VkDeviceSize{32} << 20;
@@ -240,6 +248,21 @@ void VulkanDevice::create_logical_device(const DeviceOptions& options) {
     rq_on.pNext = chain;
     chain = &rq_on;
   }
+  // The porting probe's capture (pipeline_stats.hpp): enabled only when asked for.
+  VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR stats_on{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
+  stats_on.pipelineExecutableInfo = VK_TRUE;
+  if (pipeline_stats_folder()) {
+    pipeline_stats_ = has(available, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
+    if (pipeline_stats_) {
+      extensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
+      stats_on.pNext = chain;
+      chain = &stats_on;
+    } else {
+      std::fprintf(stderr, "ASVGF_VK_PIPELINE_STATS: %s has no VK_KHR_pipeline_executable_properties\n",
+                   adapter_.info.name.c_str());
+    }
+  }
   swapchain_ = has(options.instance_extensions, VK_KHR_SURFACE_EXTENSION_NAME) &&
                has(available, VK_KHR_SWAPCHAIN_EXTENSION_NAME);
   if (swapchain_) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
@@ -275,7 +298,8 @@ void VulkanDevice::load_functions() {
   auto load = [&](const char* name) { return vkGetDeviceProcAddr(device_, name); };
   if (accel) {
     fn_.create_accel = reinterpret_cast<PFN_vkCreateAccelerationStructureKHR>(load("vkCreateAccelerationStructureKHR"));
-    fn_.destroy_accel = reinterpret_cast<PFN_vkDestroyAccelerationStructureKHR>(load("vkDestroyAccelerationStructureKHR"));
+    fn_.destroy_accel =
+        reinterpret_cast<PFN_vkDestroyAccelerationStructureKHR>(load("vkDestroyAccelerationStructureKHR"));
     fn_.accel_sizes =
         reinterpret_cast<PFN_vkGetAccelerationStructureBuildSizesKHR>(load("vkGetAccelerationStructureBuildSizesKHR"));
     fn_.accel_address = reinterpret_cast<PFN_vkGetAccelerationStructureDeviceAddressKHR>(

@@ -228,6 +228,7 @@ class VulkanDevice final : public hal::Device {
   std::uint32_t queue_family_ = 0;
   DeviceFunctions fn_;
   bool swapchain_ = false;
+  bool pipeline_stats_ = false;  // ASVGF_VK_PIPELINE_STATS on a device with the extension (pipeline_stats.hpp)
   std::uint32_t timestamp_bits_ = 0;
   std::unique_ptr<MemoryAllocator> allocator_;
   UploadRing ring_;

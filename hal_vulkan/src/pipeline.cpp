@@ -4,17 +4,23 @@
 
 #include "check.hpp"
 #include "device.hpp"
+#include "pipeline_stats.hpp"
 
 namespace hal::vulkan {
 
 VkDescriptorType descriptor_type(BindingKind kind) {
   switch (kind) {
     // Dynamic: every dispatch points it at its own slice of the upload ring.
-    case BindingKind::UniformBuffer: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
-    case BindingKind::StorageBuffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    case BindingKind::SampledImage: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-    case BindingKind::StorageImage: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    case BindingKind::AccelerationStructure: return VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+    case BindingKind::UniformBuffer:
+      return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+    case BindingKind::StorageBuffer:
+      return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    case BindingKind::SampledImage:
+      return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    case BindingKind::StorageImage:
+      return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    case BindingKind::AccelerationStructure:
+      return VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
   }
   return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 }
@@ -58,7 +64,8 @@ PipelineHandle VulkanDevice::create_pipeline(const ComputePipelineDesc& desc) {
       info.bindingCount = static_cast<std::uint32_t>(bindings.size());
       info.pBindings = bindings.data();
       VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-      check_result(vkCreateDescriptorSetLayout(device_, &info, nullptr, &layout), "vkCreateDescriptorSetLayout", desc.name);
+      check_result(vkCreateDescriptorSetLayout(device_, &info, nullptr, &layout), "vkCreateDescriptorSetLayout",
+                   desc.name);
       object.set_layouts.push_back(layout);
     }
     VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -78,6 +85,9 @@ PipelineHandle VulkanDevice::create_pipeline(const ComputePipelineDesc& desc) {
     info.stage.module = module;
     info.stage.pName = "main";
     info.layout = object.layout;
+    if (pipeline_stats_)
+      info.flags |=
+          VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR | VK_PIPELINE_CREATE_CAPTURE_INTERNAL_REPRESENTATIONS_BIT_KHR;
     check_result(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &object.pipeline),
                  "vkCreateComputePipelines", desc.name);
     vkDestroyShaderModule(device_, module, nullptr);
@@ -87,6 +97,7 @@ PipelineHandle VulkanDevice::create_pipeline(const ComputePipelineDesc& desc) {
     throw;
   }
   set_name(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<std::uint64_t>(object.pipeline), desc.name);
+  if (pipeline_stats_) dump_pipeline_stats(device_, object.pipeline, shader.name);
   return PipelineHandle{pipelines.add(std::move(object))};
 }
 
