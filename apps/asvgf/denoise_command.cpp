@@ -17,6 +17,7 @@
 #include "input_conventions.hpp"
 #include "io/image_io.hpp"
 #include "motion_check.hpp"
+#include "noise_check.hpp"
 #include "progress.hpp"
 #include "report/metrics.hpp"
 #include "scene_options.hpp"
@@ -31,6 +32,7 @@ struct DenoiseOptions {
   std::string color, albedo, normal, depth, motion, gradient, reference;
   bool depth_gradient = false;
   bool motion_check = true;
+  bool noise_check = true;
   bool validate = false;
   int first = 0;
   int frames = 0;  // 0: as many as --color has from --first-frame on
@@ -255,7 +257,7 @@ int run_denoise(DenoiseOptions& o) {
   Progress progress("denoising", frames, o.quiet);
   std::vector<float> hdr(std::size_t(w) * h * 4);
   std::vector<std::uint8_t> ldr(std::size_t(w) * h * 4);
-  std::vector<float> previous_depth;
+  std::vector<float> previous_depth, previous_color;
   for (int i = 0; i < frames; ++i) {
     const int f = o.first + i;
     std::vector<render::ExrImage> images;
@@ -283,7 +285,21 @@ int run_denoise(DenoiseOptions& o) {
         throw render::ImageIoError(motion.path(f).string() + " (motion, frame " + std::to_string(f) +
                                    "): " + *check.problem + " (--no-motion-check skips this test)");
     }
+    if (i > 0 && o.noise_check) {
+      std::vector<float> vectors;  // the denoiser's convention, as above; none when still
+      if (!still) {
+        const auto scale = motion_scale(conventions.motion, w, h);
+        vectors = images[kMotion].rgba;
+        for (std::size_t k = 0; k < vectors.size(); k += 4) vectors[k] *= scale[0], vectors[k + 1] *= scale[1];
+      }
+      const RepeatedNoiseCheck check =
+          check_repeated_noise(previous_color, images[0].rgba, previous_depth, depth_now.rgba, vectors, w, h);
+      if (check.problem)
+        throw render::ImageIoError(color.path(f).string() + " (colour, frame " + std::to_string(f) +
+                                   "): " + *check.problem + " (--no-noise-check denoises it anyway)");
+    }
     previous_depth = std::move(depth_now.rgba);
+    previous_color = images[0].rgba;
     std::optional<DenoiserImage> samples;
     if (!gradient.empty()) {
       const render::ExrImage img = read_frame(gradient, f, gradient_spec);
@@ -378,6 +394,9 @@ std::function<int()> add_denoise_command(CLI::App& app) {
   cmd->add_flag("!--no-motion-check", o->motion_check,
                 "Do not test whether the motion vectors follow the convention (checked from frame to frame: the "
                 "previous frame's depth where they point should match)");
+  cmd->add_flag("!--no-noise-check", o->noise_check,
+                "Do not test whether the noise repeats from frame to frame (a renderer's seed that is not animated: "
+                "still pixels bit-identical to the previous frame's)");
   cmd->add_flag("--validate", o->validate,
                 "Also check every frame's inputs on the GPU against the conventions and print what is wrong "
                 "(asvgf::DenoiserConfig::validate)");
