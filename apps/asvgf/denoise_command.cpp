@@ -275,23 +275,21 @@ int run_denoise(DenoiseOptions& o) {
           check_color_kind(images[0].rgba, images[1].rgba, depth_now.rgba, conventions.color == ColorInput::Radiance);
       if (kind.problem) std::fprintf(stderr, "%sframe %d: %s\n", o.quiet ? "" : "\n", f, kind.problem->c_str());
     }
-    if (i > 0 && o.motion_check && !still) {
-      // Judged in the denoiser's convention, as the GPU converts them (asvgf::motion_scale).
+    // The vectors in the denoiser's convention, as the GPU converts them (asvgf::motion_scale), for
+    // both checks; none when still.
+    std::vector<float> vectors;
+    if (i > 0 && !still && (o.motion_check || o.noise_check)) {
       const auto scale = motion_scale(conventions.motion, w, h);
-      std::vector<float> pixels = images[kMotion].rgba;
-      for (std::size_t k = 0; k < pixels.size(); k += 4) pixels[k] *= scale[0], pixels[k + 1] *= scale[1];
-      const MotionCheck check = check_motion(previous_depth, depth_now.rgba, pixels, w, h, conventions.motion);
+      vectors = images[kMotion].rgba;
+      for (std::size_t k = 0; k < vectors.size(); k += 4) vectors[k] *= scale[0], vectors[k + 1] *= scale[1];
+    }
+    if (i > 0 && o.motion_check && !still) {
+      const MotionCheck check = check_motion(previous_depth, depth_now.rgba, vectors, w, h, conventions.motion);
       if (check.problem)
         throw render::ImageIoError(motion.path(f).string() + " (motion, frame " + std::to_string(f) +
                                    "): " + *check.problem + " (--no-motion-check skips this test)");
     }
     if (i > 0 && o.noise_check) {
-      std::vector<float> vectors;  // the denoiser's convention, as above; none when still
-      if (!still) {
-        const auto scale = motion_scale(conventions.motion, w, h);
-        vectors = images[kMotion].rgba;
-        for (std::size_t k = 0; k < vectors.size(); k += 4) vectors[k] *= scale[0], vectors[k + 1] *= scale[1];
-      }
       const RepeatedNoiseCheck check =
           check_repeated_noise(previous_color, images[0].rgba, previous_depth, depth_now.rgba, vectors, w, h);
       if (check.problem)

@@ -62,6 +62,15 @@ void add_device_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_flag("--validation", o.validation, "Enable the Vulkan validation layer (synchronization validation on)");
 }
 
+namespace {
+// A denoiser setting's option: its help ends with the library's range (asvgf::check_settings, run
+// by finish_scene_options), so --help, the command line and the API refuse the same values.
+template <typename T>
+void add_setting_option(CLI::App& cmd, const char* option, T& value, const char* setting, const std::string& what) {
+  cmd.add_option(option, value, what + "; " + std::string(setting_range(setting)))->capture_default_str();
+}
+}  // namespace
+
 void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--scene", o.scene, "Built-in scene (cornell, glossy, textured, many) or a scene file (.json)")
       ->capture_default_str();
@@ -89,7 +98,7 @@ void add_specular_options(CLI::App& cmd, SceneOptions& o) {
                "On glossy scenes, denoise diffuse and specular light apart, each with its own histories "
                "(ema, svgf, asvgf with the re-shaded gradient; not with --aovs)");
   auto add = [&](const char* option, auto& value, const char* setting, const std::string& what) {
-    cmd.add_option(option, value, what + "; " + std::string(setting_range(setting)))->capture_default_str();
+    add_setting_option(cmd, option, value, setting, what);
   };
   add("--specular-atrous-iterations", o.denoise.specular_atrous_iterations, "specular_atrous_iterations",
       "A-trous iterations over the specular signal (--specular-split; Q2RTX 3)");
@@ -104,7 +113,7 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
   // The ranges are the library's (asvgf::check_settings, run by finish_scene_options), so --help,
   // the command line and the API refuse the same values.
   auto add = [&](const char* option, auto& value, const char* setting, const std::string& what) {
-    cmd.add_option(option, value, what + "; " + std::string(setting_range(setting)))->capture_default_str();
+    add_setting_option(cmd, option, value, setting, what);
   };
   add("--alpha", d.alpha, "alpha", "Temporal blend factor (SVGF 0.2)");
   add("--moments-alpha", d.moments_alpha, "moments_alpha", "Moments blend factor (SVGF 0.2)");
