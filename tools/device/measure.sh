@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# The measurements issues 36, 37 and 39 need on the H200, in one device call (prepare.sh first):
+#   bash tools/device/measure.sh [bench] [glossy] [static] [light-exit] [orbit]
+# (no step: bench glossy static). Each step has a time limit and its results go to
+# $OUT/reports.tgz as soon as it ends, so that a run cut short still returns what it measured.
+#   bench       asvgf bench at 1080p: Vulkan (ASVGF_VK_PIPELINE_STATS), OpenGL (ASVGF_GL_PROGRAM_DUMP), ES
+#   glossy      report glossy/boxes-move, 12 frames: the specular split's settings (issue 39)
+#   static      report light-exit's still frames, 12: energy bias by sigma_l and history tap
+#   light-exit  the headline, 24 frames, K up to 512 spp
+#   orbit       report glossy/orbit, 12 frames: the split against one signal with a moving camera
+set -uo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+if command -v nvidia-smi >/dev/null; then  # the device's image has no Vulkan/GL loader; never here
+  for deb in .gl/*.deb; do dpkg -x "$deb" /; done
+  ldconfig
+  nvidia-smi --query-gpu=name,driver_version,clocks.max.sm --format=csv,noheader
+fi
+export LD_LIBRARY_PATH=$PWD/.devbin/lib
+A=./.devbin/asvgf
+if ! $A info >/dev/null 2>&1; then  # the image's loaders look for the ICD where NVIDIA's container puts it
+  export VK_DRIVER_FILES=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
+  export __EGL_VENDOR_LIBRARY_FILENAMES=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
+fi
+R=/tmp/rep
+mkdir -p $R
+save() { (cd /tmp && tar czf "${OUT:-/tmp}/reports.tgz" rep); }
+# MEASURE_SIZE and MEASURE_SPP shrink the runs for a dry run on lavapipe (e.g. 32x32 and 16).
+size=${MEASURE_SIZE:-1920x1080}
+BENCH=(--size "$size" --warmup 100 --frames 50 --time-step 0.02 --first-frame 4 --method asvgf)
+HD=(--size "$size" --reference-spp "${MEASURE_SPP:-4096}")
+steps=("$@")
+[ ${#steps[@]} -gt 0 ] || steps=(bench glossy static)
+for step in "${steps[@]}"; do
+  echo "== $step $(date +%T)"
+  case $step in
+    bench)
+      { echo "-- vulkan"; ASVGF_VK_PIPELINE_STATS=$R/vkstats timeout 60 $A bench "${BENCH[@]}"
+        echo "-- gl"; ASVGF_GL_PROGRAM_DUMP=$R/gldump timeout 60 $A bench "${BENCH[@]}" --backend gl
+        echo "-- gles"; timeout 60 $A bench "${BENCH[@]}" --backend gles; } > $R/bench.txt 2>&1
+      grep -E "^--|^(denoiser|frame|pathtrace|gbuffer|temporal|atrous|copy)" $R/bench.txt
+      for f in $R/vkstats/pathtrace.software.txt $R/vkstats/gbuffer.software.txt; do
+        [ -f "$f" ] && { echo "-- $f"; grep -v "^ *representation\|^$" "$f" | head -14; }
+      done ;;
+    glossy)
+      timeout 150 $A report --scene glossy --animation boxes-move "${HD[@]}" --frames 12 --methods svgf \
+        --run def=asvgf --run 'split=asvgf --specular-split' \
+        --run 'split-sl16=asvgf --specular-split --specular-sigma-l 16' \
+        --run 'split-sl32=asvgf --specular-split --specular-sigma-l 32' \
+        --run 'split-sl64=asvgf --specular-split --specular-sigma-l 64' \
+        --run 'split-sl4=asvgf --specular-split --specular-sigma-l 4' \
+        --run 'split-i5=asvgf --specular-split --specular-atrous-iterations 5' \
+        --run 'split-sl32-i5=asvgf --specular-split --specular-sigma-l 32 --specular-atrous-iterations 5' \
+        --run 'split-a10=asvgf --specular-split --specular-alpha 0.1' \
+        --run 'tap-1=asvgf --history-tap -1' --run 'split-t=asvgf --specular-split --history-tap -1' \
+        --out $R/glossy-boxes --quiet 2>&1 | tail -3 ;;
+    static)
+      timeout 120 $A report "${HD[@]}" --animation static --frames 12 --methods raw --run def=asvgf \
+        --run 'tap-1=asvgf --history-tap -1' --run 'sl4=asvgf --sigma-l 4' --run 'sl12=asvgf --sigma-l 12' \
+        --run 'sl12-t=asvgf --sigma-l 12 --history-tap -1' --out $R/static --quiet 2>&1 | tail -3 ;;
+    light-exit)
+      timeout 200 $A report "${HD[@]}" --max-accumulation-spp 512 --methods svgf,accum --run def=asvgf \
+        --run 'tap-1=asvgf --history-tap -1' --run 'sl12=asvgf --sigma-l 12' \
+        --out $R/light-exit --quiet 2>&1 | tail -3 ;;
+    orbit)
+      timeout 150 $A report --scene glossy --animation orbit "${HD[@]}" --frames 12 --methods svgf \
+        --run def=asvgf --run 'split=asvgf --specular-split' \
+        --run 'split-sl16=asvgf --specular-split --specular-sigma-l 16' \
+        --run 'split-sl32=asvgf --specular-split --specular-sigma-l 32' \
+        --out $R/glossy-orbit --quiet 2>&1 | tail -3 ;;
+    *) echo "measure.sh: unknown step '$step'" >&2; exit 2 ;;
+  esac
+  save
+done
+grep -h "^| \`" $R/*/report.md 2>/dev/null | cut -c1-170 | head -60
