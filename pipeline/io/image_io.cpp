@@ -81,8 +81,8 @@ std::vector<std::byte> encode_exr(const std::filesystem::path& path, std::uint32
 
 void write_png(const std::filesystem::path& path, std::uint32_t w, std::uint32_t h,
                std::span<const std::uint8_t> rgba) {
-  // stb's lowest level (its default is 8): the report's mostly flat plots encode in a third of the
-  // time for 0.5% more bytes, and the frames are small either way.
+  // stb's lowest level (its default is 8): a small report run, whose time went mostly into its
+  // 960x600 plots, is 25% faster for 0.5% more bytes.
   static const bool level_set = [] {
     stbi_write_png_compression_level = 5;
     return true;
