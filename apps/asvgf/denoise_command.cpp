@@ -297,7 +297,7 @@ int run_denoise(DenoiseOptions& o) {
                                    "): " + *check.problem + " (--no-noise-check denoises it anyway)");
     }
     previous_depth = std::move(depth_now.rgba);
-    previous_color = images[0].rgba;
+    if (o.noise_check) previous_color = images[0].rgba;
     std::optional<DenoiserImage> samples;
     if (!gradient.empty()) {
       const render::ExrImage img = read_frame(gradient, f, gradient_spec);

@@ -97,46 +97,41 @@ void add_specular_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_flag("--specular-split", o.specular_split,
                "On glossy scenes, denoise diffuse and specular light apart, each with its own histories "
                "(ema, svgf, asvgf with the re-shaded gradient; not with --aovs)");
-  auto add = [&](const char* option, auto& value, const char* setting, const std::string& what) {
-    add_setting_option(cmd, option, value, setting, what);
-  };
-  add("--specular-atrous-iterations", o.denoise.specular_atrous_iterations, "specular_atrous_iterations",
-      "A-trous iterations over the specular signal (--specular-split; Q2RTX 3)");
-  add("--specular-sigma-l", o.denoise.specular_sigma_l, "specular_sigma_l",
-      "Luminance edge-stopping of the specular signal (--specular-split)");
-  add("--specular-alpha", o.denoise.specular_alpha, "specular_alpha",
-      "Temporal blend factor of the specular signal (--specular-split)");
+  add_setting_option(cmd, "--specular-atrous-iterations", o.denoise.specular_atrous_iterations,
+                     "specular_atrous_iterations",
+                     "A-trous iterations over the specular signal (--specular-split; Q2RTX 3)");
+  add_setting_option(cmd, "--specular-sigma-l", o.denoise.specular_sigma_l, "specular_sigma_l",
+                     "Luminance edge-stopping of the specular signal (--specular-split)");
+  add_setting_option(cmd, "--specular-alpha", o.denoise.specular_alpha, "specular_alpha",
+                     "Temporal blend factor of the specular signal (--specular-split)");
 }
 
 void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
   auto& d = o.denoise;
-  // The ranges are the library's (asvgf::check_settings, run by finish_scene_options), so --help,
-  // the command line and the API refuse the same values.
-  auto add = [&](const char* option, auto& value, const char* setting, const std::string& what) {
-    add_setting_option(cmd, option, value, setting, what);
-  };
-  add("--alpha", d.alpha, "alpha", "Temporal blend factor (SVGF 0.2)");
-  add("--moments-alpha", d.moments_alpha, "moments_alpha", "Moments blend factor (SVGF 0.2)");
-  add("--atrous-iterations", d.atrous_iterations, "atrous_iterations", "A-trous iterations (SVGF 5)");
-  add("--sigma-z", d.sigma_z, "sigma_z", "Depth edge-stopping (SVGF 1)");
-  add("--sigma-n", d.sigma_n, "sigma_n", "Normal edge-stopping exponent (SVGF 128)");
-  add("--sigma-l", d.sigma_l, "sigma_l",
-      "Luminance edge-stopping (SVGF 4; 0: by the image's size, 4 up to 256x256, 8 from 512x512)");
+  add_setting_option(cmd, "--alpha", d.alpha, "alpha", "Temporal blend factor (SVGF 0.2)");
+  add_setting_option(cmd, "--moments-alpha", d.moments_alpha, "moments_alpha", "Moments blend factor (SVGF 0.2)");
+  add_setting_option(cmd, "--atrous-iterations", d.atrous_iterations, "atrous_iterations",
+                     "A-trous iterations (SVGF 5)");
+  add_setting_option(cmd, "--sigma-z", d.sigma_z, "sigma_z", "Depth edge-stopping (SVGF 1)");
+  add_setting_option(cmd, "--sigma-n", d.sigma_n, "sigma_n", "Normal edge-stopping exponent (SVGF 128)");
+  add_setting_option(cmd, "--sigma-l", d.sigma_l, "sigma_l",
+                     "Luminance edge-stopping (SVGF 4; 0: by the image's size, 4 up to 256x256, 8 from 512x512)");
   cmd.add_option("--kernel", o.kernel, "A-trous kernel: b3spline (5x5, paper) or box (3x3, seed)")
       ->check(CLI::IsMember({"b3spline", "box"}))
       ->capture_default_str();
-  add("--gradient-iterations", d.gradient_iterations, "gradient_iterations",
-      "A-trous iterations over the gradient (Q2RTX 3)");
+  add_setting_option(cmd, "--gradient-iterations", d.gradient_iterations, "gradient_iterations",
+                     "A-trous iterations over the gradient (Q2RTX 3)");
   cmd.add_option("--gradient-source", o.gradient_source,
                  "A-SVGF's gradient: reshaded (the renderer re-shades last frame's samples; paper) or reprojected "
                  "(estimated from reprojected noisy luminance, no renderer help; Q2RTX)")
       ->check(CLI::IsMember({"reshaded", "reprojected"}))
       ->capture_default_str();
-  add("--antilag", d.antilag, "antilag",
-      "A-SVGF: how strongly the temporal gradient shortens the history (paper 1, measured best 4; 0: "
-      "constant alpha)");
-  add("--history-cap", d.history_cap, "history_cap", "Maximum history length in frames");
-  add("--history-tap", d.history_tap, "history_tap",
+  add_setting_option(cmd, "--antilag", d.antilag, "antilag",
+                     "A-SVGF: how strongly the temporal gradient shortens the history (paper 1, measured best 4; 0: "
+                     "constant alpha)");
+  add_setting_option(cmd, "--history-cap", d.history_cap, "history_cap", "Maximum history length in frames");
+  add_setting_option(
+      cmd, "--history-tap", d.history_tap, "history_tap",
       "A-trous iteration whose output feeds the colour history (0: the first, SVGF; -1: none, the temporal "
       "result unfiltered)");
 }
