@@ -206,7 +206,11 @@ ImageHandle GlDevice::create_image(const ImageDesc& desc) {
 PipelineHandle GlDevice::create_pipeline(const ComputePipelineDesc& desc) {
   make_current();
   const ShaderInfo& shader = *desc.shader;
-  const std::string_view source = context_.flavour() == Flavour::Gles ? shader.source("essl") : shader.source("glsl");
+  const bool es = context_.flavour() == Flavour::Gles;
+  const std::string replacement = program_source_override(shader.name, es);
+  const std::string_view source = !replacement.empty() ? std::string_view(replacement)
+                                  : es                 ? shader.source("essl")
+                                                       : shader.source("glsl");
   if (source.empty())
     throw Error(ErrorKind::Unsupported, desc.name,
                 "shader '" + std::string(shader.name) + "' has no " +
@@ -229,14 +233,15 @@ PipelineHandle GlDevice::create_pipeline(const ComputePipelineDesc& desc) {
                   "shader '" + std::string(shader.name) + "' uses " + std::to_string(used) + " " + l.what + "; " +
                       adapter_.name + " allows " + std::to_string(gl_int(l.query)) + " in a compute shader");
   }
-  const std::string_view spirv = spirv_shaders_ ? shader.source("spirv-gl") : std::string_view{};
+  const bool from_spirv = spirv_shaders_ && replacement.empty();  // a replacement is GLSL
+  const std::string_view spirv = from_spirv ? shader.source("spirv-gl") : std::string_view{};
   // No quiet fallback to GLSL: a test that asked for SPIR-V programs would pass on GLSL ones.
-  if (spirv_shaders_ && spirv.empty())
+  if (from_spirv && spirv.empty())
     throw Error(ErrorKind::InvalidUsage, desc.name,
                 "shader '" + std::string(shader.name) +
                     "' has no OpenGL SPIR-V translation (spirv-gl) to load; ASVGF_GL_SHADERS=glsl compiles its GLSL");
   const GLuint compute = glCreateShader(GL_COMPUTE_SHADER);
-  if (spirv_shaders_) {
+  if (from_spirv) {
     glShaderBinary(1, &compute, GL_SHADER_BINARY_FORMAT_SPIR_V_ARB, spirv.data(), static_cast<GLsizei>(spirv.size()));
     glSpecializeShaderARB(compute, "main", 0, nullptr, nullptr);
   } else {

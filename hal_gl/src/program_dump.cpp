@@ -5,8 +5,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
+
+#include "hal/error.hpp"
 
 namespace hal::gl {
 namespace {
@@ -46,6 +49,24 @@ void dump_program(GLuint program, std::string_view shader_name, std::string_view
   if (!ok)
     std::fprintf(stderr, "ASVGF_GL_PROGRAM_DUMP: could not write %s.bin/.glsl (binary of %d bytes)\n",
                  base.string().c_str(), static_cast<int>(written));
+}
+
+std::string program_source_override(std::string_view shader_name, bool es) {
+  const char* folder = std::getenv("ASVGF_GL_PROGRAM_SOURCE");
+  if (!folder || !*folder) return "";
+  const std::filesystem::path path =
+      std::filesystem::path(folder) / (std::string(shader_name) + (es ? ".essl" : ".glsl"));
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return "";
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in || text.str().empty())
+    throw Error(ErrorKind::InvalidUsage, path.string(),
+                "ASVGF_GL_PROGRAM_SOURCE: cannot read this file, or it is empty");
+  std::fprintf(stderr, "ASVGF_GL_PROGRAM_SOURCE: '%s' compiled from %s\n", std::string(shader_name).c_str(),
+               path.string().c_str());
+  return text.str();
 }
 
 }  // namespace hal::gl

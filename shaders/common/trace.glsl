@@ -145,6 +145,11 @@ bool trace_any(vec3 o, vec3 d, float tmin, float tmax, uint skip) {
 #else  // TRACE_SOFTWARE
 
 const uint kBvhStackSize = 48u;  // render::kMaxBvhDepth
+// One traversal stack for every call site (the path tracer traces closest hits and shadow rays,
+// never both at once). Declared in traverse(), each inlined call got an array of its own, and
+// compilers that keep the array in local memory kept both: NVIDIA's OpenGL two of 48 16-byte slots
+// an invocation, its path tracer 1.6x slower than with one (docs/performance.md, issue 37).
+uint bvh_stack[kBvhStackSize];
 
 // Where the ray enters a node's box within [tmin, tmax], or -1.0 when it misses it (callers pass
 // tmin >= 0). The miss was once tmax + 1.0, which rounds back to tmax at the callers' tmax of 1e30:
@@ -171,7 +176,6 @@ Hit traverse(vec3 o, vec3 d, float tmin, float tmax, uint skip, bool any_hit) {
   Hit h = no_hit(tmax);
   ShearedRay r = shear_ray(o, d);
   vec3 inv_d = safe_inverse(d);
-  uint stack[kBvhStackSize];
   uint top = 0u;
   uint node = 0u;
   bool found_any = false;  // any_hit's stop: breaks, not a `return` (see intersect_triangle)
@@ -205,7 +209,7 @@ Hit traverse(vec3 o, vec3 d, float tmin, float tmax, uint skip, bool any_hit) {
         uint near_child = tl <= tr ? left : right;
         uint far_child = tl <= tr ? right : left;
         if (top < kBvhStackSize) {
-          stack[top] = far_child;
+          bvh_stack[top] = far_child;
           top += 1u;
         }
         node = near_child;
@@ -218,7 +222,7 @@ Hit traverse(vec3 o, vec3 d, float tmin, float tmax, uint skip, bool any_hit) {
     }
     if (top == 0u) break;
     top -= 1u;
-    node = stack[top];
+    node = bvh_stack[top];
   }
   return h;
 }
