@@ -4,7 +4,7 @@
 // Defaults and their sources (the papers and implementations named; README "Denoiser parameters"):
 //   alpha 0.2, moments_alpha 0.2, atrous_iterations 5, sigma_z 1, sigma_n 128, B3-spline kernel,
 //   history_tap 0, min_history 4: SVGF paper (Schied et al. 2017) and Falcor's SVGF pass.
-//   sigma_l 0, by the image's size: the paper's 4 up to 256x256 pixels, 8 from 512x512 (measured;
+//   sigma_l 0, by the image's size: the paper's 4 up to 256x256 pixels, 12 from 768x768 (measured;
 //   see luminance_sigma).
 //   gradient_iterations 3: Q2RTX (a-trous over the gradient at 1/3 resolution).
 //   antilag 4: measured (the paper's is 1; Q2RTX's flt_antilag_hf 1 with a history shortened by
@@ -72,11 +72,12 @@ struct DenoiseSettings {
 };
 
 // The luminance edge-stopping a width x height image is filtered with: settings.sigma_l, or where it
-// is 0, 4 up to 256x256 pixels, rising with sqrt(width x height) to 8 at 512x512 and above. The
+// is 0, 4 up to 256x256 pixels, rising with sqrt(width x height) to 12 at 768x768 and above. The
 // filter works in pixels, and the larger the image the less neighbouring pixels differ in signal
 // against their noise: on cornell/static (lavapipe) 4 is best at 256x256 (8: +27% relMSE), 6 at
-// 384x384, 8 at 512x512 (-13% against 4), and on the H200 at 1920x1080 8 is 36-42% better than 4
-// on every built-in scene (docs/quality.md, "sigma_l by the image's size").
+// 384x384, 8 at 512x512 (-13% against 4); at 1920x1080 (H200, H100) 8 is 36-42% better than 4 and
+// 12 another 12-19% better than 8 on every built-in scene, lag unchanged; 16 gains a little more but
+// lags on `textured` (docs/quality.md, "sigma_l by the image's size").
 float luminance_sigma(const DenoiseSettings& settings, std::uint32_t width, std::uint32_t height);
 
 // Whether `method` with `settings` reads gradient samples the renderer re-shaded (A-SVGF with

@@ -132,7 +132,7 @@ TEST_CASE("denoiser settings: every checked setting has a range, and every range
     CHECK_MESSAGE(names.count(member) == 1, member << " has no range");
 }
 
-TEST_CASE("luminance_sigma: a set sigma_l wins; 0 gives 4 up to 256x256, 8 from 512x512, between them with the size") {
+TEST_CASE("luminance_sigma: a set sigma_l wins; 0 gives 4 up to 256x256, 12 from 768x768, between them with the size") {
   DenoiseSettings s;
   REQUIRE(s.sigma_l == 0.0f);  // the default is the size's
   CHECK(luminance_sigma(s, 1, 1) == 4.0f);
@@ -140,8 +140,9 @@ TEST_CASE("luminance_sigma: a set sigma_l wins; 0 gives 4 up to 256x256, 8 from 
   CHECK(luminance_sigma(s, 256, 256) == 4.0f);
   CHECK(luminance_sigma(s, 384, 384) == doctest::Approx(6.0f));
   CHECK(luminance_sigma(s, 512, 512) == 8.0f);
-  CHECK(luminance_sigma(s, 1920, 1080) == 8.0f);
-  CHECK(luminance_sigma(s, 16384, 16384) == 8.0f);
+  CHECK(luminance_sigma(s, 768, 768) == 12.0f);
+  CHECK(luminance_sigma(s, 1920, 1080) == 12.0f);
+  CHECK(luminance_sigma(s, 16384, 16384) == 12.0f);
   CHECK(luminance_sigma(s, 1024, 256) == 8.0f);  // by the pixel count: sqrt(1024 x 256) = 512
   s.sigma_l = 3.0f;
   CHECK(luminance_sigma(s, 1920, 1080) == 3.0f);

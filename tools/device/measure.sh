@@ -6,8 +6,10 @@
 #   bench       asvgf bench at 1080p: Vulkan (ASVGF_VK_PIPELINE_STATS), OpenGL (ASVGF_GL_PROGRAM_DUMP), ES
 #   glossy      report glossy/boxes-move, 12 frames: the specular split's settings (issue 39)
 #   static      report light-exit's still frames, 12: energy bias by sigma_l and history tap
-#   light-exit  the headline, 24 frames, K up to 512 spp
+#   light-exit  the headline, 24 frames, K from plain accumulation at 128, 256 and 512 spp (about 4 minutes)
 #   orbit       report glossy/orbit, 12 frames: the split against one signal with a moving camera
+#   sigma       σ_l above the size rule's 8 at 1080p (issue 39): static and light-exit (energy), the
+#               other built-in scenes, orbit and boxes-move (error), 12 frames each
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 if command -v nvidia-smi >/dev/null; then  # the device's image has no Vulkan/GL loader; never here
@@ -58,15 +60,28 @@ for step in "${steps[@]}"; do
         --run 'tap-1=asvgf --history-tap -1' --run 'sl4=asvgf --sigma-l 4' --run 'sl12=asvgf --sigma-l 12' \
         --run 'sl12-t=asvgf --sigma-l 12 --history-tap -1' --out $R/static --quiet 2>&1 | tail -3 ;;
     light-exit)
-      timeout 200 $A report "${HD[@]}" --max-accumulation-spp 512 --methods svgf,accum --run def=asvgf \
-        --run 'tap-1=asvgf --history-tap -1' --run 'sl12=asvgf --sigma-l 12' \
-        --out $R/light-exit --quiet 2>&1 | tail -3 ;;
+      timeout 300 $A report "${HD[@]}" --max-accumulation-spp 512 --methods accum-128spp,accum-256spp,accum-512spp \
+        --run def=asvgf --run 'sl8=asvgf --sigma-l 8' --out $R/light-exit --quiet 2>&1 | tail -3 ;;
     orbit)
       timeout 150 $A report --scene glossy --animation orbit "${HD[@]}" --frames 12 --methods svgf \
         --run def=asvgf --run 'split=asvgf --specular-split' \
         --run 'split-sl16=asvgf --specular-split --specular-sigma-l 16' \
         --run 'split-sl32=asvgf --specular-split --specular-sigma-l 32' \
         --out $R/glossy-orbit --quiet 2>&1 | tail -3 ;;
+    sigma)
+      SL=(--run def=asvgf --run 'sl12=asvgf --sigma-l 12' --run 'sl16=asvgf --sigma-l 16')
+      timeout 60 $A report "${HD[@]}" --animation static --frames 12 --methods raw "${SL[@]}" \
+        --run 'sl24=asvgf --sigma-l 24' --run 'sl12-t=asvgf --sigma-l 12 --history-tap -1' \
+        --out $R/sigma-static --quiet 2>&1 | tail -1
+      save
+      timeout 200 $A report "${HD[@]}" --scenes cornell,glossy,textured --frames 12 --methods raw "${SL[@]}" \
+        --out $R/sigma-scenes --quiet 2>&1 | tail -1
+      save
+      for anim in orbit boxes-move; do
+        timeout 100 $A report --scene glossy --animation $anim "${HD[@]}" --frames 12 --methods raw \
+          "${SL[@]}" --out $R/sigma-$anim --quiet 2>&1 | tail -1
+        save
+      done ;;
     *) echo "measure.sh: unknown step '$step'" >&2; exit 2 ;;
   esac
   save

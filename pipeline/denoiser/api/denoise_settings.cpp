@@ -120,7 +120,7 @@ std::string_view setting_range(std::string_view setting) {
 float luminance_sigma(const DenoiseSettings& settings, std::uint32_t width, std::uint32_t height) {
   if (settings.sigma_l > 0.0f) return settings.sigma_l;
   const double side = std::sqrt(double(width) * double(height));
-  return float(4.0 * std::clamp(side / 256.0, 1.0, 2.0));
+  return float(4.0 * std::clamp(side / 256.0, 1.0, 3.0));
 }
 
 std::string SettingProblem::message() const {
