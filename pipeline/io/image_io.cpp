@@ -158,6 +158,22 @@ ExrImage read_exr(const std::filesystem::path& path, std::span<const std::string
     throw ImageIoError(name + ": cannot read EXR: " + message);
   };
   if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) fail("bad header");
+  // A region render (Arnold, Karma, Nuke) stores only the region's pixels, placed in a larger frame.
+  // Read as a whole frame they would land at the origin, and pair with other buffers pixel for pixel
+  // by position in the file, not in the frame: refused rather than silently moved.
+  const EXRBox2i data = header.data_window, display = header.display_window;
+  if (data.min_x != display.min_x || data.min_y != display.min_y || data.max_x != display.max_x ||
+      data.max_y != display.max_y) {
+    FreeEXRHeader(&header);
+    auto box = [](const EXRBox2i& b) {
+      return "(" + std::to_string(b.min_x) + "," + std::to_string(b.min_y) + ")-(" + std::to_string(b.max_x) + "," +
+             std::to_string(b.max_y) + ")";
+    };
+    throw ImageIoError(name + ": cannot read EXR: its data window " + box(data) + " is not its display window " +
+                       box(display) +
+                       " (a region render?); asvgf reads whole frames: make the region the frame first, e.g. "
+                       "`oiiotool IN --fullpixels -o OUT`, or render without a region");
+  }
   ExrImage out;
   int index[4] = {-1, -1, -1, -1};  // R, G, B, A
   std::string unsupported;
