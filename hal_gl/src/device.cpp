@@ -72,7 +72,8 @@ std::string shaders_variable() {
 }
 
 // Drivers that run our programs faster from SPIR-V than from GLSL, measured (docs/performance.md):
-// NVIDIA's (H200, 1080p frame 6.6 against 7.5 ms, denoiser 0.648 against 0.672). Mesa's llvmpipe
+// NVIDIA's (1080p path tracing 3.94 against 4.68 ms on the H100; the H200's frame 6.6 against 7.5
+// ms, denoiser 0.648 against 0.672, when the path tracer had two stacks). Mesa's llvmpipe
 // runs the OpenGL suites slower from SPIR-V (78 s of CPU against 20); other drivers are unmeasured.
 bool spirv_measured_faster(const std::string& vendor) {
   return vendor.find("NVIDIA") != std::string::npos;

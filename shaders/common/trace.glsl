@@ -148,7 +148,7 @@ const uint kBvhStackSize = 48u;  // render::kMaxBvhDepth
 // One traversal stack for every call site (the path tracer traces closest hits and shadow rays,
 // never both at once). Declared in traverse(), each inlined call got an array of its own, and
 // compilers that keep the array in local memory kept both: NVIDIA's OpenGL two of 48 16-byte slots
-// an invocation, its path tracer 1.6x slower than with one (docs/performance.md, issue 37).
+// an invocation, its path tracer 1.6-1.8x slower than with one (docs/performance.md, issue 37).
 uint bvh_stack[kBvhStackSize];
 
 // Where the ray enters a node's box within [tmin, tmax], or -1.0 when it misses it (callers pass
