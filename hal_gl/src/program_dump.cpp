@@ -57,6 +57,9 @@ std::string program_source_override(std::string_view shader_name, bool es) {
   const std::filesystem::path path =
       std::filesystem::path(folder) / (std::string(shader_name) + (es ? ".essl" : ".glsl"));
   std::error_code ec;
+  // A folder that is not there (a typo) would otherwise time the embedded programs unannounced.
+  if (!std::filesystem::is_directory(folder, ec))
+    throw Error(ErrorKind::InvalidUsage, folder, "ASVGF_GL_PROGRAM_SOURCE: no such folder");
   if (!std::filesystem::is_regular_file(path, ec)) return "";
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;

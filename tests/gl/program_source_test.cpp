@@ -67,7 +67,8 @@ void write_text(const std::filesystem::path& path, std::string_view text) {
 }  // namespace
 
 TEST_CASE(
-    "gl programs: ASVGF_GL_PROGRAM_SOURCE compiles a shader from the folder's <name>.glsl, SPIR-V chosen or not") {
+    "gl programs: ASVGF_GL_PROGRAM_SOURCE compiles a shader from the folder's <name>.glsl, SPIR-V chosen or not, and "
+    "refuses a missing folder") {
   // Per process: ctest runs this case on its own and again inside the whole SPIR-V suite, side by side.
   const std::filesystem::path folder = std::filesystem::path("gl_program_source") / std::to_string(getpid());
   std::filesystem::remove_all(folder);
@@ -93,5 +94,7 @@ TEST_CASE(
   CHECK_THROWS_WITH_AS(device->create_pipeline({"scale", &shader}), doctest::Contains(file.string().c_str()),
                        hal::Error);
   CHECK(messages.empty());
+  // A folder that is not there is an error, not the embedded programs timed unannounced.
   std::filesystem::remove_all(folder);
+  CHECK_THROWS_WITH_AS(device->create_pipeline({"scale", &shader}), doctest::Contains("no such folder"), hal::Error);
 }
