@@ -86,7 +86,7 @@ def sweep_files(out_dir, command):
         fail("the unfaulted run wrote no file")
     total = 0
     for op, n in counts:
-        calls = range(1, n + 1) if op == "write" else sorted({1, n} - {0})
+        calls = range(1, n + 1) if op == "write" else sorted({1, n}) if n else []
         for k in calls:
             fault = "%s:%d" % (op, k)
             r = run(command, out_dir, fault, "ASVGF_FILE_FAULT")

@@ -8,7 +8,7 @@
 #   static      report light-exit's still frames, 12: energy bias by sigma_l and history tap
 #   light-exit  the headline, 24 frames, K from plain accumulation at 128, 256 and 512 spp (about 4 minutes)
 #   orbit       report glossy/orbit, 12 frames: the split against one signal with a moving camera
-#   sigma       σ_l above the size rule's 8 at 1080p (issue 39): static and light-exit (energy), the
+#   sigma       σ_l around the size rule's 12 at 1080p (issue 39): static and light-exit (energy), the
 #               other built-in scenes, orbit and boxes-move (error), 12 frames each
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
@@ -57,8 +57,8 @@ for step in "${steps[@]}"; do
         --out $R/glossy-boxes --quiet 2>&1 | tail -3 ;;
     static)
       timeout 120 $A report "${HD[@]}" --animation static --frames 12 --methods raw --run def=asvgf \
-        --run 'tap-1=asvgf --history-tap -1' --run 'sl4=asvgf --sigma-l 4' --run 'sl12=asvgf --sigma-l 12' \
-        --run 'sl12-t=asvgf --sigma-l 12 --history-tap -1' --out $R/static --quiet 2>&1 | tail -3 ;;
+        --run 'tap-1=asvgf --history-tap -1' --run 'sl4=asvgf --sigma-l 4' --run 'sl8=asvgf --sigma-l 8' \
+        --out $R/static --quiet 2>&1 | tail -3 ;;
     light-exit)
       timeout 300 $A report "${HD[@]}" --max-accumulation-spp 512 --methods accum-128spp,accum-256spp,accum-512spp \
         --run def=asvgf --run 'sl8=asvgf --sigma-l 8' --out $R/light-exit --quiet 2>&1 | tail -3 ;;
@@ -69,9 +69,9 @@ for step in "${steps[@]}"; do
         --run 'split-sl32=asvgf --specular-split --specular-sigma-l 32' \
         --out $R/glossy-orbit --quiet 2>&1 | tail -3 ;;
     sigma)
-      SL=(--run def=asvgf --run 'sl12=asvgf --sigma-l 12' --run 'sl16=asvgf --sigma-l 16')
+      SL=(--run def=asvgf --run 'sl8=asvgf --sigma-l 8' --run 'sl16=asvgf --sigma-l 16')
       timeout 60 $A report "${HD[@]}" --animation static --frames 12 --methods raw "${SL[@]}" \
-        --run 'sl24=asvgf --sigma-l 24' --run 'sl12-t=asvgf --sigma-l 12 --history-tap -1' \
+        --run 'sl24=asvgf --sigma-l 24' --run 'def-t=asvgf --history-tap -1' \
         --out $R/sigma-static --quiet 2>&1 | tail -1
       save
       timeout 200 $A report "${HD[@]}" --scenes cornell,glossy,textured --frames 12 --methods raw "${SL[@]}" \
