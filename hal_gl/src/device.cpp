@@ -145,7 +145,7 @@ GlDevice::~GlDevice() {
     glDeleteBuffers(1, &uniform_buffer_);
     if (readback_buffer_) glDeleteBuffers(1, &readback_buffer_);
     glDeleteFramebuffers(1, &read_framebuffer_);
-    es_clear_.reset();
+    gpu_clear_.reset();
     if (debug_output_) glDebugMessageCallback(nullptr, nullptr);
   } catch (...) {
     // A context that cannot be made current has nothing left to release.
@@ -523,23 +523,15 @@ void GlDevice::copy_image_to_buffer(ImageHandle src, BufferHandle dst) {
 
 void GlDevice::clear_buffer(BufferHandle handle, std::uint32_t word) {
   const BufferObject& b = buffers_.get(handle.id, "buffer");
-  const auto bytes = static_cast<GLsizeiptr>(b.desc.size / 4 * 4);
-  glBindBuffer(GL_COPY_WRITE_BUFFER, b.buffer);
-  if (options_.flavour == Flavour::Gl) {
-    // Filled by the GPU: the upload below took about 0.6 s a GB on the H200, and a buffer the host
-    // filled copied at a third of the bandwidth afterwards (docs/performance.md).
-    glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, 0, bytes, GL_RED_INTEGER, GL_UNSIGNED_INT, &word);
-    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
-    return;
-  }
-  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
-  es_clear().buffer(b.buffer, b.desc.size / 4, word);  // OpenGL ES has no buffer clear
+  // A dispatch on both flavours: ES has no buffer clear, and on desktop OpenGL a buffer filled by
+  // glClearBufferSubData copied slower than one the dispatch filled (gpu_clear.hpp).
+  gpu_clear().buffer(b.buffer, b.desc.size / 4, word);
   check_gl(b.desc.name, "clear_buffer");
 }
 
-EsClear& GlDevice::es_clear() {
-  if (!es_clear_) es_clear_ = std::make_unique<EsClear>();
-  return *es_clear_;
+GpuClear& GlDevice::gpu_clear() {
+  if (!gpu_clear_) gpu_clear_ = std::make_unique<GpuClear>();
+  return *gpu_clear_;
 }
 
 void GlDevice::clear_image(ImageHandle handle, std::array<float, 4> value) {
@@ -549,7 +541,7 @@ void GlDevice::clear_image(ImageHandle handle, std::array<float, 4> value) {
     glClearTexImage(i.texture, 0, i.format.format, i.format.type, texel.data());
     return;
   }
-  const bool cleared = es_clear().image(i.texture, i.format.internal, value);
+  const bool cleared = gpu_clear().image(i.texture, i.format.internal, value);
   check_gl(i.desc.name, "clear_image");
   if (cleared) return;
   // Not colour-renderable in this ES context (e.g. float formats without GL_EXT_color_buffer_float).

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "context.hpp"
-#include "es_clear.hpp"
 #include "formats.hpp"
+#include "gpu_clear.hpp"
 #include "hal/device.hpp"
 #include "hal/error.hpp"
 
@@ -111,7 +111,7 @@ class GlDevice final : public Device {
   void copy_image_to_buffer(ImageHandle src, BufferHandle dst);
   void clear_buffer(BufferHandle buffer, std::uint32_t word);
   void clear_image(ImageHandle image, std::array<float, 4> value);
-  EsClear& es_clear();
+  GpuClear& gpu_clear();
   void timestamp(TimerQueriesHandle timers, std::uint32_t query);
   // Reads a whole image into `pack` (a bound GL_PIXEL_PACK_BUFFER offset) or host memory.
   void read_texture(const ImageObject& image, void* destination);
@@ -123,9 +123,9 @@ class GlDevice final : public Device {
   Context context_;
   AdapterInfo adapter_;
   Capabilities capabilities_;
-  GLuint uniform_buffer_ = 0;          // refilled (orphaned) for every dispatch's uniform block
-  GLuint read_framebuffer_ = 0;        // OpenGL ES reads images back through it
-  std::unique_ptr<EsClear> es_clear_;  // OpenGL ES's clears on the GPU (es_clear.hpp), made at the first clear
+  GLuint uniform_buffer_ = 0;            // refilled (orphaned) for every dispatch's uniform block
+  GLuint read_framebuffer_ = 0;          // OpenGL ES reads images back through it
+  std::unique_ptr<GpuClear> gpu_clear_;  // buffer clears (and ES's image clears) on the GPU, made at the first clear
   // Programs from the shader tool's OpenGL SPIR-V ("spirv-gl") instead of its GLSL.
   bool spirv_shaders_ = false;
   // Buffers with immutable storage (glBufferStorage: OpenGL 4.4+, ES with GL_EXT_buffer_storage):

@@ -1,4 +1,4 @@
-#include "es_clear.hpp"
+#include "gpu_clear.hpp"
 
 #include <algorithm>
 #include <string>
@@ -49,12 +49,12 @@ bool integer_format(GLenum internal_format) {
 
 }  // namespace
 
-EsClear::~EsClear() {
+GpuClear::~GpuClear() {
   if (program_) glDeleteProgram(program_);
   if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
 }
 
-void EsClear::buffer(GLuint buffer, std::uint64_t words, std::uint32_t word) {
+void GpuClear::buffer(GLuint buffer, std::uint64_t words, std::uint32_t word) {
   if (words == 0) return;
   if (!program_) {
     program_ = compile_clear_program();
@@ -77,7 +77,7 @@ void EsClear::buffer(GLuint buffer, std::uint64_t words, std::uint32_t word) {
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
-bool EsClear::image(GLuint texture, GLenum internal_format, std::array<float, 4> value) {
+bool GpuClear::image(GLuint texture, GLenum internal_format, std::array<float, 4> value) {
   if (!framebuffer_) glGenFramebuffers(1, &framebuffer_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
   glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
