@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The measurements issues 36, 37 and 39 need on the H200, in one device call (prepare.sh first):
-#   bash tools/device/measure.sh [bench] [glossy] [static] [light-exit] [orbit]
+#   bash tools/device/measure.sh [bench] [glossy] [static] [light-exit] [orbit] [sigma] [local-mean]
 # (no step: bench glossy static). Each step has a time limit and its results go to
 # $OUT/reports.tgz as soon as it ends, so that a run cut short still returns what it measured.
 #   bench       asvgf bench at 1080p: Vulkan (ASVGF_VK_PIPELINE_STATS), OpenGL (ASVGF_GL_PROGRAM_DUMP), ES
@@ -10,6 +10,8 @@
 #   orbit       report glossy/orbit, 12 frames: the split against one signal with a moving camera
 #   sigma       σ_l around the size rule's 12 at 1080p (issue 39): static and light-exit (energy), the
 #               other built-in scenes, orbit and boxes-move (error), 12 frames each
+#   local-mean  the energy probe (issue 39): static, 12 frames, the displayed frame's local mean corrected
+#               to the temporal result's for k in $LOCAL_MEAN_K (default 9 17 33 65), with and without the gate
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 if command -v nvidia-smi >/dev/null; then  # the device's image has no Vulkan/GL loader; never here
@@ -82,6 +84,28 @@ for step in "${steps[@]}"; do
           "${SL[@]}" --out $R/sigma-$anim --quiet 2>&1 | tail -1
         save
       done ;;
+    local-mean)
+      # docs/quality.md, "Energy: a correction of the displayed frame's local mean": static, 12 frames,
+      # one reference frame (the scene never changes), the correction for each k with and without
+      # the gate, by tools/probes/local_mean.py (one process a frame). The frames stay in /tmp/lm.
+      L=/tmp/lm; rm -rf $L; mkdir -p $L/ref $R/local-mean
+      S=(--size "$size" --animation static)
+      timeout 150 $A render "${S[@]}" --frames 1 --method reference --spp "${MEASURE_SPP:-4096}" --out $L/ref1 >> $R/local-mean/render.log 2>&1
+      timeout 60 $A render "${S[@]}" --frames 12 --history-tap -1 --atrous-iterations 0 --out $L/T >> $R/local-mean/render.log 2>&1
+      timeout 60 $A render "${S[@]}" --frames 12 --history-tap -1 --out $L/F >> $R/local-mean/render.log 2>&1
+      timeout 60 $A render "${S[@]}" --frames 12 --out $L/D >> $R/local-mean/render.log 2>&1
+      for i in $(seq 0 11); do ln -sf ../ref1/frame_0000.exr "$(printf "$L/ref/frame_%04d.exr" "$i")"; done
+      ks=(${LOCAL_MEAN_K:-9 17 33 65})
+      for i in $(seq 0 11); do
+        timeout 300 python3 tools/probes/local_mean.py $L "$i" "${ks[@]}" &
+        timeout 300 python3 tools/probes/local_mean.py $L "$i" "${ks[@]}" --gate &
+      done
+      wait
+      for d in T F D $(for k in "${ks[@]}"; do echo C$k C${k}g; done); do
+        ./.devbin/exr_compare "$L/ref/frame_%04d.exr" "$L/$d/frame_%04d.exr" 0 12 > $R/local-mean/$d.txt 2>&1
+        awk -v d=$d '/^frame/{f=$2+0; sub(",","",$4); r+=$4; n++; e=$7; sub("[%,]+","",e); if (f>=5){s+=e; m++}}
+          END{printf "%-6s mean relMSE %.5f  energy bias (frames 5-11) %+.2f%%\n", d, r/n, s/m}' $R/local-mean/$d.txt
+      done | tee $R/local-mean/summary.txt ;;
     *) echo "measure.sh: unknown step '$step'" >&2; exit 2 ;;
   esac
   save

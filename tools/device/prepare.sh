@@ -19,6 +19,7 @@ if ! ls .gl/libvulkan1_*.deb >/dev/null 2>&1; then
 fi
 mkdir -p .devbin/lib
 cp build/bin/asvgf .devbin/asvgf
+cp build/bin/exr_compare .devbin/exr_compare  # measure.sh local-mean
 # The libraries Ubuntu's image lacks: what asvgf links from Debian beyond the loaders and libc.
 for lib in libepoxy.so.0 libtinyobjloader.so.2rc10 libtinygltf.so.2d libtinyexr.so.1d libstb.so.0; do
   cp -L "/lib/x86_64-linux-gnu/$lib" .devbin/lib/
