@@ -11,7 +11,7 @@
 #   sigma       σ_l around the size rule's 12 at 1080p (issue 39): static and light-exit (energy), the
 #               other built-in scenes, orbit and boxes-move (error), 12 frames each
 #   local-mean  the energy probe (issue 39): static, 12 frames, the displayed frame's local mean corrected
-#               to the temporal result's for k in $LOCAL_MEAN_K (default 9 17 33 65), with and without the gate
+#               to the temporal result's for k in $LOCAL_MEAN_K (default 9 17 33 65 129), with and without the gate
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 if command -v nvidia-smi >/dev/null; then  # the device's image has no Vulkan/GL loader; never here
@@ -95,7 +95,7 @@ for step in "${steps[@]}"; do
       timeout 60 $A render "${S[@]}" --frames 12 --history-tap -1 --out $L/F >> $R/local-mean/render.log 2>&1
       timeout 60 $A render "${S[@]}" --frames 12 --out $L/D >> $R/local-mean/render.log 2>&1
       for i in $(seq 0 11); do ln -sf ../ref1/frame_0000.exr "$(printf "$L/ref/frame_%04d.exr" "$i")"; done
-      ks=(${LOCAL_MEAN_K:-9 17 33 65})
+      ks=(${LOCAL_MEAN_K:-9 17 33 65 129})
       for i in $(seq 0 11); do
         timeout 300 python3 tools/probes/local_mean.py $L "$i" "${ks[@]}" &
         timeout 300 python3 tools/probes/local_mean.py $L "$i" "${ks[@]}" --gate &
