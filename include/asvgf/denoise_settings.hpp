@@ -12,6 +12,7 @@
 //   history_cap 32: Falcor's SVGF (Q2RTX caps at 256 with alpha_min 0.02, moments alpha 0.01).
 //   specular_atrous_iterations 4: measured on `glossy` at 1080p (Q2RTX 3; docs/performance.md).
 //   specular_sigma_l 0, specular_alpha 0: the diffuse chain's.
+//   local_mean 0: off (the paper's filter; measured, not yet at 1080p).
 #pragma once
 
 #include <cstdint>
@@ -69,6 +70,13 @@ struct DenoiseSettings {
   // accumulated harder than the diffuse one without touching it.
   float specular_sigma_l = 0.0f;
   float specular_alpha = 0.0f;
+  // The local-mean correction's window k (odd; 0: off, the paper's filter): the filtered colour
+  // scaled so that its k x k local mean of luminance is the temporal result's, which puts back the
+  // energy the a-trous gather drops at bright pixels and the local contrast it blurs (one signal;
+  // the specular chain of --specular-split is not corrected). Measured offline at 64-256 px: no
+  // energy bias and 6-27% less error with k near a fifteenth of the image's side; opt-in until
+  // measured at 1080p (docs/quality.md, "Energy: a correction of the displayed frame's local mean").
+  int local_mean = 0;
 };
 
 // The luminance edge-stopping a width x height image is filtered with: settings.sigma_l, or where it

@@ -27,6 +27,9 @@ asvgf_add_cli_test("asvgf report --methods restricts the runs and says where the
 asvgf_add_cli_test("asvgf report --timing separate times every frame in a back-to-back pass and says so" LABEL app EXIT 0
                    MATCH "rendered a second time for timing"
                    COMMAND bash -c "rm -rf ${report_dir}/timing && $<TARGET_FILE:asvgf> report ${report_tiny_args} --methods asvgf,accum --timing separate --out ${report_dir}/timing && ${report_check} check ${report_dir}/timing asvgf,accum-1spp,accum-4spp && ${report_check} timed ${report_dir}/timing && grep -o 'rendered a second time for timing' ${report_dir}/timing/report.md")
+asvgf_add_cli_test("asvgf report --run --local-mean: the local-mean correction keeps the temporal result's energy, its energy bias under half the uncorrected filter's on the static room" LABEL app EXIT 0
+                   MATCH "report_check: ok: energy bias t "
+                   COMMAND bash -c "rm -rf ${report_dir}/local-mean && $<TARGET_FILE:asvgf> report --size 32x32 --frames 16 --reference-spp 64 --max-accumulation-spp 1 --quiet --animation static --methods asvgf --run 't=asvgf --history-tap -1' --run 'lm=asvgf --history-tap -1 --local-mean 5' --out ${report_dir}/local-mean && ${report_check} keeps-energy ${report_dir}/local-mean t lm")
 asvgf_add_cli_test("asvgf report on the static room gives every run an energy bias (ema-0.05 saturates after 20 of 24 frames), as report.csv's means say" LABEL app EXIT 0
                    MATCH "report_check: ok: energy bias of 12 runs"
                    COMMAND bash -c "rm -rf ${report_dir}/energy && $<TARGET_FILE:asvgf> report --size 24x24 --frames 24 --reference-spp 32 --max-accumulation-spp 4 --quiet --animation static --out ${report_dir}/energy && ${report_check} energy ${report_dir}/energy")

@@ -22,6 +22,7 @@
   report_check.py energy DIR               report.md's energy bias is a number for every run, and for
                                            runs without a history (raw, accum-*) the ratio of
                                            report.csv's mean to reference_mean over all frames, minus 1
+  report_check.py keeps-energy DIR A B     run B's |energy bias| in report.md is under half run A's
 """
 import csv
 import math
@@ -298,8 +299,8 @@ def timed(directory):
     print("report_check: ok: %d rows timed" % len(rows))
 
 
-def energy(directory):
-    rows = read_csv(directory)
+def shown_energy(directory):
+    """Each run's energy bias in percent, as report.md's run table shows it."""
     md = open(os.path.join(directory, "report.md"), encoding="utf-8").read()
     header = next((l for l in md.splitlines() if l.startswith("| run |") and "energy bias" in l), None)
     if header is None:
@@ -310,6 +311,12 @@ def energy(directory):
         cells = [c.strip() for c in line.split("|")]
         if len(cells) > col and cells[1].startswith("`") and "%" in cells[col]:
             shown[cells[1].strip("`")] = float(cells[col].split("%")[0])
+    return shown
+
+
+def energy(directory):
+    rows = read_csv(directory)
+    shown = shown_energy(directory)
     runs = {r["run"] for r in rows}
     for name in sorted(runs):
         if name not in shown:
@@ -321,6 +328,17 @@ def energy(directory):
                 fail("%s: energy bias %.2f%% in report.md, %.4f%% from report.csv" % (name, shown[name], want))
     print("report_check: ok: energy bias of %d runs: %s" % (len(shown), ", ".join(
         "%s %+.2f%%" % (n, shown[n]) for n in sorted(shown))))
+
+
+def keeps_energy(directory, a, b):
+    """Run b's |energy bias| is under half run a's."""
+    shown = shown_energy(directory)
+    for name in (a, b):
+        if name not in shown:
+            fail("run %s has no energy bias in report.md" % name)
+    if not abs(shown[b]) < 0.5 * abs(shown[a]):
+        fail("%s's energy bias %+.2f%% is not under half %s's %+.2f%%" % (b, shown[b], a, shown[a]))
+    print("report_check: ok: energy bias %s %+.2f%%, %s %+.2f%%" % (a, shown[a], b, shown[b]))
 
 
 if __name__ == "__main__":
@@ -336,6 +354,8 @@ if __name__ == "__main__":
         runs(sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5])
     elif len(sys.argv) == 3 and sys.argv[1] == "energy":
         energy(sys.argv[2])
+    elif len(sys.argv) == 5 and sys.argv[1] == "keeps-energy":
+        keeps_energy(sys.argv[2], sys.argv[3], sys.argv[4])
     elif len(sys.argv) == 4 and sys.argv[1] in ("same", "differ"):
         (same if sys.argv[1] == "same" else differ)(sys.argv[2], sys.argv[3])
     else:

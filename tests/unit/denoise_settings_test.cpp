@@ -49,6 +49,8 @@ TEST_CASE("denoiser settings: the defaults and every range's ends pass the check
       {"specular_atrous_iterations", [](auto& s) { s.specular_atrous_iterations = 0; }},
       {"specular_sigma_l", [](auto& s) { s.specular_sigma_l = 32.0f; }},
       {"specular_alpha", [](auto& s) { s.specular_alpha = 1.0f; }},
+      {"local_mean", [](auto& s) { s.local_mean = 3; }},
+      {"local_mean", [](auto& s) { s.local_mean = 255; }},
   };
   for (const auto& c : good) {
     DenoiseSettings s;
@@ -103,6 +105,10 @@ TEST_CASE(
       {"specular_alpha", [](auto& s) { s.specular_alpha = -0.1f; }},
       {"specular_alpha", [](auto& s) { s.specular_alpha = 1.5f; }},
       {"specular_alpha", [](auto& s) { s.specular_alpha = kNan; }},
+      {"local_mean", [](auto& s) { s.local_mean = 1; }},
+      {"local_mean", [](auto& s) { s.local_mean = 4; }},
+      {"local_mean", [](auto& s) { s.local_mean = 257; }},
+      {"local_mean", [](auto& s) { s.local_mean = -5; }},
   };
   for (const auto& c : bad) {
     DenoiseSettings s;
@@ -128,7 +134,7 @@ TEST_CASE("denoiser settings: every checked setting has a range, and every range
   for (const char* member :
        {"alpha", "moments_alpha", "atrous_iterations", "sigma_z", "sigma_n", "sigma_l", "kernel", "gradient_iterations",
         "history_cap", "history_tap", "gradient_source", "antilag", "min_history", "exposure", "tonemap",
-        "specular_atrous_iterations", "specular_sigma_l", "specular_alpha"})
+        "specular_atrous_iterations", "specular_sigma_l", "specular_alpha", "local_mean"})
     CHECK_MESSAGE(names.count(member) == 1, member << " has no range");
 }
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The measurements issues 36, 37 and 39 need on the H200, in one device call (prepare.sh first):
-#   bash tools/device/measure.sh [bench] [glossy] [static] [light-exit] [orbit] [sigma] [local-mean]
+#   bash tools/device/measure.sh [bench] [glossy] [static] [light-exit] [orbit] [sigma] [local-mean] [local-mean-report]
 # (no step: bench glossy static). Each step has a time limit and its results go to
 # $OUT/reports.tgz as soon as it ends, so that a run cut short still returns what it measured.
 #   bench       asvgf bench at 1080p: Vulkan (ASVGF_VK_PIPELINE_STATS), OpenGL (ASVGF_GL_PROGRAM_DUMP), ES
@@ -12,6 +12,8 @@
 #               other built-in scenes, orbit and boxes-move (error), 12 frames each
 #   local-mean  the energy probe (issue 39): static, 12 frames, the displayed frame's local mean corrected
 #               to the temporal result's for k in $LOCAL_MEAN_K (default 9 17 33 65 129), with and without the gate
+#   local-mean-report  the built correction (--local-mean 17, 33, 65 with tap -1; 33 with tap 0) in
+#               `asvgf report` on light-exit and orbit (flicker, lag, energy), and its passes' time
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 if command -v nvidia-smi >/dev/null; then  # the device's image has no Vulkan/GL loader; never here
@@ -106,6 +108,18 @@ for step in "${steps[@]}"; do
         awk -v d=$d '/^frame/{f=$2+0; sub(",","",$4); r+=$4; n++; e=$7; sub("[%,]+","",e); if (f>=5){s+=e; m++}}
           END{printf "%-6s mean relMSE %.5f  energy bias (frames 5-11) %+.2f%%\n", d, r/n, s/m}' $R/local-mean/$d.txt
       done | tee $R/local-mean/summary.txt ;;
+    local-mean-report)
+      # The built correction (--local-mean) at 1080p: error, flicker, lag and energy on light-exit and
+      # orbit, 12 frames each, then its cost in the bench.
+      LM=(--run 't=asvgf --history-tap -1' --run 'lm17=asvgf --history-tap -1 --local-mean 17'
+          --run 'lm33=asvgf --history-tap -1 --local-mean 33' --run 'lm65=asvgf --history-tap -1 --local-mean 65'
+          --run 'lm33-tap0=asvgf --local-mean 33')
+      for anim in light-exit orbit; do
+        timeout 200 $A report "${HD[@]}" --animation $anim --frames 12 --methods raw --run def=asvgf "${LM[@]}" \
+          --out $R/local-mean-$anim --quiet 2>&1 | tail -1
+        save
+      done
+      timeout 60 $A bench "${BENCH[@]}" --local-mean 33 2>&1 | grep -E "^(atrous.5|local_mean|composite|denoiser|frame)" ;;
     *) echo "measure.sh: unknown step '$step'" >&2; exit 2 ;;
   esac
   save

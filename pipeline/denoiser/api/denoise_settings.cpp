@@ -96,6 +96,11 @@ const std::vector<Rule>& rules() {
       {{"specular_alpha", "--specular-alpha", "[0, 1] (0: alpha's)"},
        [](const auto& s) { return in_closed(s.specular_alpha, 0, 1); },
        [](const auto& s) { return text(s.specular_alpha); }},
+      {{"local_mean", "--local-mean", "0 (off) or odd 3..255"},
+       [](const auto& s) {
+         return s.local_mean == 0 || (s.local_mean >= 3 && s.local_mean <= 255 && s.local_mean % 2 == 1);
+       },
+       [](const auto& s) { return std::to_string(s.local_mean); }},
   };
   return all;
 }

@@ -10,6 +10,7 @@
 #include "denoiser/passes/composite.hpp"
 #include "denoiser/passes/gradient.hpp"
 #include "denoiser/passes/gradient_atrous.hpp"
+#include "denoiser/passes/local_mean.hpp"
 #include "denoiser/passes/temporal.hpp"
 #include "denoiser/passes/variance.hpp"
 
@@ -143,11 +144,19 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
 
   Chain diffuse;
   if (filter != Filter::None) {
-    // One signal: its last packed a-trous iteration composites.
+    // The local-mean correction reads the last iteration's output (s.local_mean, denoiser/passes/local_mean.hpp).
+    const bool local_mean = s.local_mean > 0 && filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
+    // One signal: its last packed a-trous iteration composites (but not what is corrected after it).
     const std::optional<CompositeResources> composite =
-        in.specular ? std::nullopt
-                    : std::optional(CompositeResources{0, in.albedo, in.hdr, in.display, in.counters, {}, {}});
+        in.specular || local_mean
+            ? std::nullopt
+            : std::optional(CompositeResources{0, in.albedo, in.hdr, in.display, in.counters, {}, {}});
     diffuse = add_chain(graph, pipelines, in.illumination, in.albedo, "", in, out.gradient, s, filter, composite);
+    if (local_mean) {
+      const ResourceId corrected = graph.add_image("local_mean_corrected", w, h, F::RGBA16F);
+      add_local_mean(graph, pipelines, {diffuse.integrated, diffuse.filtered, corrected, ""}, s);
+      diffuse.filtered = corrected;
+    }
     out.filtered = diffuse.filtered;
     out.moments = diffuse.moments;
     out.integrated = diffuse.integrated;

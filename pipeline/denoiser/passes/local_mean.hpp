@@ -1,0 +1,25 @@
+// denoiser/passes/local_mean.hpp: the local-mean correction (shaders/denoise/local_mean.comp,
+// DenoiseSettings::local_mean): the filtered colour scaled so that its k x k local mean of
+// luminance is the temporal result's.
+#pragma once
+
+#include <string>
+
+#include "asvgf/compute_pass.hpp"
+#include "asvgf/denoise_settings.hpp"
+#include "asvgf/render_graph.hpp"
+
+namespace asvgf::passes {
+
+struct LocalMeanResources {
+  graph::ResourceId temporal = 0;   // read: the temporal pass's result (RGBA16F)
+  graph::ResourceId filtered = 0;   // read: the last a-trous iteration's output (RGBA16F image)
+  graph::ResourceId corrected = 0;  // written: RGBA16F, the filtered colour scaled (alpha kept)
+  std::string prefix;               // of the pass names
+};
+// Adds "<prefix>local_mean.rows" and "<prefix>local_mean" (settings.local_mean > 0), with the row
+// means in an RGBA32F image of their own (OpenGL ES has no RG32F storage images).
+void add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
+                    const DenoiseSettings& settings);
+
+}  // namespace asvgf::passes
