@@ -71,11 +71,13 @@ struct DenoiseSettings {
   float specular_sigma_l = 0.0f;
   float specular_alpha = 0.0f;
   // The local-mean correction's window k (odd; 0: off, the paper's filter): the filtered colour
-  // scaled so that its k x k local mean of luminance is the temporal result's, which puts back the
-  // energy the a-trous gather drops at bright pixels and the local contrast it blurs (one signal;
-  // the specular chain of --specular-split is not corrected). Measured offline at 64-256 px: no
-  // energy bias and 6-27% less error with k near a fifteenth of the image's side; opt-in until
-  // measured at 1080p (docs/quality.md, "Energy: a correction of the displayed frame's local mean").
+  // scaled toward the temporal result's k x k local mean of luminance, where that mean is known
+  // better than its difference from the filtered one's. It gives back energy the a-trous gather
+  // drops at bright pixels and local contrast it blurs (one signal; the specular chain of
+  // --specular-split is not corrected). Measured at 32-256 px only: with history_tap -1, 33% less
+  // error and two fifths of the energy loss at 64x64 with k 5 (k near a fifteenth of the image's
+  // side); opt-in until measured at 1080p (docs/quality.md, "Energy: a correction of the displayed
+  // frame's local mean").
   int local_mean = 0;
 };
 
