@@ -1,5 +1,5 @@
 // local_mean.comp: the local-mean correction (DenoiseSettings::local_mean, opt-in): scales the
-// filtered colour so that its k x k local mean of luminance is the temporal result's. The a-trous
+// filtered colour toward the temporal result's k x k local mean of luminance. The a-trous
 // gather, normalised per pixel, loses energy where a bright pixel's neighbours are darker and takes
 // local contrast everywhere; the temporal result holds neither loss, and its k x k mean is far less
 // noisy than its pixels (docs/quality.md, "Energy: a correction of the displayed frame's local

@@ -1,6 +1,6 @@
 // denoiser/passes/local_mean.hpp: the local-mean correction (shaders/denoise/local_mean.comp,
-// DenoiseSettings::local_mean): the filtered colour scaled so that its k x k local mean of
-// luminance is the temporal result's.
+// DenoiseSettings::local_mean): the filtered colour scaled toward the temporal result's k x k local
+// mean of luminance, where that mean is known better than its difference from the filtered one's.
 #pragma once
 
 #include <string>
