@@ -154,7 +154,7 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
     diffuse = add_chain(graph, pipelines, in.illumination, in.albedo, "", in, out.gradient, s, filter, composite);
     if (local_mean) {
       const ResourceId corrected = graph.add_image("local_mean_corrected", w, h, F::RGBA16F);
-      add_local_mean(graph, pipelines, {diffuse.integrated, diffuse.filtered, corrected, ""}, s);
+      add_local_mean(graph, pipelines, {diffuse.integrated, diffuse.filtered, corrected}, s);
       diffuse.filtered = corrected;
     }
     out.filtered = diffuse.filtered;
