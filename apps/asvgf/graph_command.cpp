@@ -20,29 +20,22 @@
 namespace asvgf::cli {
 namespace {
 
+// The scene and the denoiser's settings are the rendering commands' (scene_options.hpp), checked
+// the same way, so that the graph printed is the one `asvgf render` with those options runs.
 struct GraphOptions {
-  std::string scene = "cornell";
-  std::string animation = "light-exit";
-  std::string method = "asvgf";
-  std::string size = "128x128";
+  SceneOptions scene;
   int frame = 1;
-  int atrous_iterations = 5;
-  bool specular_split = false;
   std::string dot;
 };
 
-int run_graph(const GraphOptions& o) {
+int run_graph(GraphOptions& o) {
+  finish_scene_options(o.scene);
   frame::FrameSettings settings;
-  settings.method = *frame::method_from_string(o.method);  // validated by the CLI
-  const ImageSize size = parse_size_option("--size", o.size);
-  settings.width = size.width;
-  settings.height = size.height;
-  settings.denoise.atrous_iterations = o.atrous_iterations;
-  settings.specular_split = o.specular_split;
+  static_cast<frame::FrameConfig&>(settings) = render_settings(o.scene);
 
   const auto owned = hal::validate::wrap(std::make_unique<hal::record::RecordDevice>());
   hal::Device& device = *owned;
-  const scene::Scene scene = scene::builtin_scene(o.scene, o.animation);
+  const scene::Scene scene = load_scene(o.scene);
   render::SceneGpu scene_gpu(device, scene, device.capabilities().ray_query);
   const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
   frame::FrameTargets targets{
@@ -66,8 +59,8 @@ int run_graph(const GraphOptions& o) {
     auto g = builder.build(settings, scene_gpu, targets);
     auto compiled = runtime.compile(g);
     if (f == o.frame) {
-      std::printf("scene %s, animation %s, method %s, %ux%u\n%s", o.scene.c_str(), o.animation.c_str(),
-                  o.method.c_str(), settings.width, settings.height, compiled.text().c_str());
+      std::printf("scene %s, animation %s, method %s, %ux%u\n%s", o.scene.scene.c_str(), o.scene.animation.c_str(),
+                  o.scene.method.c_str(), settings.width, settings.height, compiled.text().c_str());
       if (!o.dot.empty()) {
         render::write_file_atomic(o.dot, compiled.dot());
         std::printf("Graphviz written to %s\n", o.dot.c_str());
@@ -87,24 +80,22 @@ int run_graph(const GraphOptions& o) {
 std::function<int()> add_graph_command(CLI::App& app) {
   auto options = std::make_shared<GraphOptions>();
   auto* cmd = app.add_subcommand("graph", "Print the compiled render graph of one frame (no GPU needed)");
-  cmd->add_option("--scene", options->scene, "Built-in scene")
-      ->check(CLI::IsMember(scene::builtin_scenes()))
+  SceneOptions& o = options->scene;
+  cmd->add_option("--scene", o.scene, "Built-in scene (cornell, glossy, textured, many) or a scene file (.json)")
       ->capture_default_str();
-  cmd->add_option("--animation", options->animation, "Animation of the built-in scene")
+  cmd->add_option("--animation", o.animation, "Animation of the built-in scene")
       ->check(CLI::IsMember(scene::builtin_animations()))
       ->capture_default_str();
-  cmd->add_option("--method", options->method, "Denoising method")
+  cmd->add_option("--method", o.method, "Denoising method")
       ->check(CLI::IsMember({"raw", "ema", "svgf", "asvgf", "reference"}))
       ->capture_default_str();
-  cmd->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--frame", options->frame, "Frame to print (frame 0 has no history yet)")
       ->check(CLI::Range(0, 1000))
       ->capture_default_str();
-  cmd->add_option("--atrous-iterations", options->atrous_iterations, "A-trous iterations (svgf, asvgf)")
-      ->check(CLI::Range(0, 16))
-      ->capture_default_str();
-  cmd->add_flag("--specular-split", options->specular_split,
-                "On glossy scenes, diffuse and specular light in chains of their own");
+  cmd->add_flag("--no-demodulation", o.no_demodulation, "Denoise radiance with the albedo in it");
+  add_specular_options(*cmd, o);
+  add_denoise_options(*cmd, o);
   cmd->add_option("--dot", options->dot, "Also write the graph as Graphviz to this file");
   return [options] { return run_graph(*options); };
 }
