@@ -135,9 +135,9 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
       "A-trous iteration whose output feeds the colour history (0: the first, SVGF; -1: none, the temporal "
       "result unfiltered)");
   add_setting_option(cmd, "--local-mean", d.local_mean, "local_mean",
-                     "Scale the filtered colour toward the temporal result's K x K local mean of luminance, where "
-                     "that mean is known better than its difference (energy and contrast the a-trous filter loses; "
-                     "opt-in, measured up to 256x256; 0: off)");
+                     "Scale the filtered colour (and the colour history the a-trous tap feeds) toward the temporal "
+                     "result's K x K local mean of luminance (energy and contrast the a-trous filter loses; opt-in, "
+                     "measured up to 256x256, K near a tenth of the image's side; 0: off)");
 }
 
 std::optional<ImageSize> parse_size(std::string_view text) {

@@ -72,12 +72,13 @@ struct DenoiseSettings {
   float specular_alpha = 0.0f;
   // The local-mean correction's window k (odd; 0: off, the paper's filter): the filtered colour
   // scaled toward the temporal result's k x k local mean of luminance, where that mean is known
-  // better than its difference from the filtered one's. It gives back energy the a-trous gather
-  // drops at bright pixels and local contrast it blurs (one signal; the specular chain of
-  // --specular-split is not corrected). Measured at 32-256 px only: with history_tap -1, 33% less
-  // error and two fifths of the energy loss at 64x64 with k 5 (k near a fifteenth of the image's
-  // side); opt-in until measured at 1080p (docs/quality.md, "Energy: a correction of the displayed
-  // frame's local mean").
+  // better than its difference from the filtered one's, and the colour history the a-trous tap
+  // feeds scaled toward it always (else the filter's loss feeds back through the history). It gives
+  // back energy the a-trous gather drops at bright pixels and local contrast it blurs (one signal;
+  // the specular chain of --specular-split is not corrected). Measured at 32-256 px only: on the
+  // static room 24-44% less error and the energy within 0.6% (k 5 at 64x64, 17 at 256x256; k near
+  // a tenth to a fifteenth of the image's side), more flicker at small k; opt-in until measured at
+  // 1080p (docs/quality.md, "Energy: a correction of the displayed frame's local mean").
   int local_mean = 0;
 };
 

@@ -23,6 +23,7 @@ layout(set = 0, binding = 0) uniform Params {
   uint width;
   uint height;
   int radius;  // (k - 1) / 2
+  uint gated;  // 0: the plain ratio (the tapped history's correction, whose bias would accumulate)
 } params;
 #ifdef ROWS
 layout(set = 0, binding = 1) uniform texture2D temporal;  // the temporal pass's result
@@ -57,7 +58,7 @@ void main() {
   float k = float(2 * params.radius + 1);
   float d2 = (mean.x - mean.y) * (mean.x - mean.y);
   float se2 = max(mean.z - mean.x * mean.x, 0.0) / (k * k);
-  float g = d2 + se2 > 0.0 ? d2 / (d2 + se2) : 0.0;
+  float g = params.gated == 0u ? 1.0 : d2 + se2 > 0.0 ? d2 / (d2 + se2) : 0.0;
   // Nothing filtered to scale (a black neighbourhood): left as it is.
   float scale = mean.y > 1e-6 ? 1.0 + g * (mean.x / mean.y - 1.0) : 1.0;
   vec4 f = texelFetch(filtered, p, 0);

@@ -22,8 +22,9 @@
   report_check.py energy DIR               report.md's energy bias is a number for every run, and for
                                            runs without a history (raw, accum-*) the ratio of
                                            report.csv's mean to reference_mean over all frames, minus 1
-  report_check.py corrects-energy DIR A B  run B's |energy bias| in report.md is at most two thirds of
-                                           run A's, and its mean relMSE in report.csv is lower
+  report_check.py corrects-energy DIR A B [FRACTION]  run B's |energy bias| in report.md is at most
+                                           FRACTION (default 2/3) of run A's, and its mean relMSE in
+                                           report.csv is lower
 """
 import csv
 import math
@@ -331,8 +332,8 @@ def energy(directory):
         "%s %+.2f%%" % (n, shown[n]) for n in sorted(shown))))
 
 
-def corrects_energy(directory, a, b):
-    """Run b's |energy bias| in report.md is at most two thirds of run a's, and its mean relMSE in
+def corrects_energy(directory, a, b, fraction=2.0 / 3.0):
+    """Run b's |energy bias| in report.md is at most `fraction` of run a's, and its mean relMSE in
     report.csv is lower."""
     shown = shown_energy(directory)
     rows = read_csv(directory)
@@ -340,8 +341,8 @@ def corrects_energy(directory, a, b):
         if name not in shown:
             fail("run %s has no energy bias in report.md" % name)
     relmse = {n: sum(float(r["relmse"]) for r in rows if r["run"] == n) for n in (a, b)}
-    if not abs(shown[b]) <= abs(shown[a]) * 2.0 / 3.0:
-        fail("%s's energy bias %+.2f%% is not within two thirds of %s's %+.2f%%" % (b, shown[b], a, shown[a]))
+    if not abs(shown[b]) <= abs(shown[a]) * fraction:
+        fail("%s's energy bias %+.2f%% is not within %.2f of %s's %+.2f%%" % (b, shown[b], fraction, a, shown[a]))
     if not relmse[b] < relmse[a]:
         fail("%s's relMSE (sum over frames %.4g) is not below %s's (%.4g)" % (b, relmse[b], a, relmse[a]))
     print("report_check: ok: energy bias %s %+.2f%%, %s %+.2f%%; relMSE summed over frames %.4g, %.4g" % (
@@ -361,8 +362,8 @@ if __name__ == "__main__":
         runs(sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5])
     elif len(sys.argv) == 3 and sys.argv[1] == "energy":
         energy(sys.argv[2])
-    elif len(sys.argv) == 5 and sys.argv[1] == "corrects-energy":
-        corrects_energy(sys.argv[2], sys.argv[3], sys.argv[4])
+    elif len(sys.argv) in (5, 6) and sys.argv[1] == "corrects-energy":
+        corrects_energy(sys.argv[2], sys.argv[3], sys.argv[4], *(float(x) for x in sys.argv[5:]))
     elif len(sys.argv) == 4 and sys.argv[1] in ("same", "differ"):
         (same if sys.argv[1] == "same" else differ)(sys.argv[2], sys.argv[3])
     else:

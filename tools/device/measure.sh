@@ -12,7 +12,7 @@
 #               other built-in scenes, orbit and boxes-move (error), 12 frames each
 #   local-mean  the energy probe (issue 39): static, 12 frames, the displayed frame's local mean corrected
 #               to the temporal result's for k in $LOCAL_MEAN_K (default 9 17 33 65 129), with and without the gate
-#   local-mean-report  the built correction (--local-mean 17, 33, 65 with tap -1; 33 with tap 0) in
+#   local-mean-report  the built correction (--local-mean 17, 33, 65; 33 with tap -1) in
 #               `asvgf report` on light-exit and orbit (flicker, lag, energy), and its passes' time
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
@@ -111,9 +111,8 @@ for step in "${steps[@]}"; do
     local-mean-report)
       # The built correction (--local-mean) at 1080p: error, flicker, lag and energy on light-exit and
       # orbit, 12 frames each, then its cost in the bench.
-      LM=(--run 't=asvgf --history-tap -1' --run 'lm17=asvgf --history-tap -1 --local-mean 17'
-          --run 'lm33=asvgf --history-tap -1 --local-mean 33' --run 'lm65=asvgf --history-tap -1 --local-mean 65'
-          --run 'lm33-tap0=asvgf --local-mean 33')
+      LM=(--run 'lm17=asvgf --local-mean 17' --run 'lm33=asvgf --local-mean 33' --run 'lm65=asvgf --local-mean 65'
+          --run 't=asvgf --history-tap -1' --run 'lm33-t=asvgf --history-tap -1 --local-mean 33')
       for anim in light-exit orbit; do
         timeout 200 $A report "${HD[@]}" --animation $anim --frames 12 --methods raw --run def=asvgf "${LM[@]}" \
           --out $R/local-mean-$anim --quiet 2>&1 | tail -1

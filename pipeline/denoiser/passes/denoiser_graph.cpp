@@ -32,7 +32,7 @@ struct Chain {
 Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId signal, graph::ResourceId albedo,
                 const std::string& prefix, const GraphDenoiserInputs& in, std::optional<graph::ResourceId> gradient,
                 const DenoiseSettings& s, Filter filter, std::optional<CompositeResources> composite,
-                std::optional<graph::ResourceId> virtual_motion = std::nullopt) {
+                std::optional<graph::ResourceId> virtual_motion = std::nullopt, bool local_mean = false) {
   using F = hal::Format;
   using graph::Lifetime;
   using graph::ResourceId;
@@ -73,7 +73,14 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
     const ResourceId next = packed ? graph.add_buffer(name, packed_bytes) : graph.add_image(name, w, h, F::RGBA16F);
     const bool first_packed = packed && !depth_gradient;
     if (first_packed) depth_gradient = graph.add_image(prefix + "depth_gradient", w, h, F::R32F);
-    const std::optional<ResourceId> history = i == s.history_tap ? std::optional(c.color_history) : std::nullopt;
+    // With the local-mean correction the tapped history is corrected too (after this iteration):
+    // uncorrected, the filter's energy loss would feed back through the history into the temporal
+    // result that the displayed colour is corrected toward.
+    const bool tap = i == s.history_tap;
+    const std::optional<ResourceId> history =
+        !tap ? std::nullopt
+             : std::optional(local_mean ? graph.add_image(prefix + "color_history_filtered", w, h, F::RGBA16F)
+                                        : c.color_history);
     const bool last_packed = i + 1 == s.atrous_iterations && depth_gradient && !packed;
     if (last_packed && composite) {
       // The filtered image is still declared, by an iteration without the history tap that only
@@ -88,6 +95,9 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
                   first_packed ? std::optional(VarianceEstimateInputs{c.moments, albedo}) : std::nullopt},
                  i, s);
     }
+    if (tap && local_mean)
+      add_local_mean(graph, pipelines, {c.integrated, *history, c.color_history, prefix + "local_mean.history", false},
+                     s);
     current = next;
   }
   c.filtered = current;
@@ -151,7 +161,8 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
         in.specular || local_mean
             ? std::nullopt
             : std::optional(CompositeResources{0, in.albedo, in.hdr, in.display, in.counters, {}, {}});
-    diffuse = add_chain(graph, pipelines, in.illumination, in.albedo, "", in, out.gradient, s, filter, composite);
+    diffuse = add_chain(graph, pipelines, in.illumination, in.albedo, "", in, out.gradient, s, filter, composite,
+                        std::nullopt, local_mean);
     if (local_mean) {
       const ResourceId corrected = graph.add_image("local_mean_corrected", w, h, F::RGBA16F);
       add_local_mean(graph, pipelines, {diffuse.integrated, diffuse.filtered, corrected}, s);

@@ -14,14 +14,14 @@ using Uniforms = asvgf::shaders::local_mean_rows_uniforms::Params;
 void add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
                     const DenoiseSettings& s) {
   const auto& decl = graph.resource(r.corrected);
-  const Uniforms u{decl.width, decl.height, (s.local_mean - 1) / 2};
-  const graph::ResourceId rows = graph.add_image("local_mean_rows", decl.width, decl.height, hal::Format::RGBA32F);
+  const Uniforms u{decl.width, decl.height, (s.local_mean - 1) / 2, r.gated ? 1u : 0u};
+  const graph::ResourceId rows = graph.add_image(r.name + "_rows", decl.width, decl.height, hal::Format::RGBA32F);
   const hal::ShaderInfo& rows_shader = asvgf::shaders::local_mean_rows;
-  add_compute_pass(graph, "local_mean.rows", rows_shader, pipelines.get<Uniforms>(rows_shader),
+  add_compute_pass(graph, r.name + ".rows", rows_shader, pipelines.get<Uniforms>(rows_shader),
                    {{"temporal", r.temporal}, {"filtered", r.filtered}, {"row_means", rows}}, to_bytes(u),
                    {u.width, u.height, 1});
   const hal::ShaderInfo& columns_shader = asvgf::shaders::local_mean_columns;
-  add_compute_pass(graph, "local_mean", columns_shader, pipelines.get<Uniforms>(columns_shader),
+  add_compute_pass(graph, r.name, columns_shader, pipelines.get<Uniforms>(columns_shader),
                    {{"row_means", rows}, {"filtered", r.filtered}, {"corrected", r.corrected}}, to_bytes(u),
                    {u.width, u.height, 1});
 }

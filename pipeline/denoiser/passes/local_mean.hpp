@@ -3,6 +3,8 @@
 // mean of luminance, where that mean is known better than its difference from the filtered one's.
 #pragma once
 
+#include <string>
+
 #include "asvgf/compute_pass.hpp"
 #include "asvgf/denoise_settings.hpp"
 #include "asvgf/render_graph.hpp"
@@ -13,9 +15,11 @@ struct LocalMeanResources {
   graph::ResourceId temporal = 0;   // read: the temporal pass's result (RGBA16F)
   graph::ResourceId filtered = 0;   // read: the last a-trous iteration's output (RGBA16F image)
   graph::ResourceId corrected = 0;  // written: RGBA16F, the filtered colour scaled (alpha kept)
+  std::string name = "local_mean";  // of the passes: the displayed colour's, or the tapped history's
+  bool gated = true;                // false: the plain ratio (local_mean.comp)
 };
-// Adds "local_mean.rows" and "local_mean" (settings.local_mean > 0), with the row
-// means in an RGBA32F image of their own (OpenGL ES has no RG32F storage images).
+// Adds "<name>.rows" and "<name>" (settings.local_mean > 0), with the row means in an RGBA32F
+// image of their own (OpenGL ES has no RG32F storage images).
 void add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
                     const DenoiseSettings& settings);
 
