@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The measurements issues 36, 37 and 39 need on the H200, in one device call (prepare.sh first):
 #   bash tools/device/measure.sh [bench] [glossy] [static] [light-exit] [orbit] [sigma] [local-mean] [local-mean-report]
+#                                [gl-composite] [vk-occupancy]
 # (no step: bench glossy static). Each step has a time limit and its results go to
 # $OUT/reports.tgz as soon as it ends, so that a run cut short still returns what it measured.
 #   bench       asvgf bench at 1080p: Vulkan (ASVGF_VK_PIPELINE_STATS), OpenGL (ASVGF_GL_PROGRAM_DUMP), ES
@@ -14,6 +15,8 @@
 #               to the temporal result's for k in $LOCAL_MEAN_K (default 9 17 33 65 129), with and without the gate
 #   local-mean-report  the built correction (--local-mean 17, 33, 65; 33 with tap -1) in
 #               `asvgf report` on light-exit and orbit (flicker, lag, energy), and its passes' time
+#   gl-composite  OpenGL's last a-trous iteration with the composite's stores or its pow edited out
+#   vk-occupancy  Vulkan's path tracer at 8 and 4 workgroups a SM (tools/device/occupancy_probe.sh first)
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 if command -v nvidia-smi >/dev/null; then  # the device's image has no Vulkan/GL loader; never here
@@ -119,6 +122,33 @@ for step in "${steps[@]}"; do
         save
       done
       timeout 60 $A bench "${BENCH[@]}" --local-mean 33 2>&1 | grep -E "^(atrous.5|local_mean|composite|denoiser|frame)" ;;
+    gl-composite)
+      # issue 37: the composite's share of OpenGL's atrous.5+composite (1.29-1.38x Vulkan's where the
+      # middle iterations are 1.13-1.16x): the dumped program timed as it is and with three edits
+      # (ASVGF_GL_PROGRAM_SOURCE), without the display image's store, the HDR image's, the sRGB pow.
+      G=/tmp/glc; rm -rf $G; mkdir -p $G/nodisplay $G/nohdr $G/nopow
+      ASVGF_GL_PROGRAM_DUMP=$G/dump timeout 60 $A bench "${BENCH[@]}" --backend gl > /dev/null 2>&1
+      S=$G/dump/atrous.last_composite.glsl
+      sed -E '/imageStore\(display,/d' $S > $G/nodisplay/atrous.last_composite.glsl
+      sed -E '/imageStore\(hdr,/d' $S > $G/nohdr/atrous.last_composite.glsl
+      sed -E 's/pow\(([^,()]+), 0\.4166666[0-9]*\)/\1/' $S > $G/nopow/atrous.last_composite.glsl
+      for round in 1 2; do
+        echo "-- gl round $round"; timeout 60 $A bench "${BENCH[@]}" --backend gl 2>&1 | grep -E "^(atrous|denoiser)"
+        for d in nodisplay nohdr nopow; do
+          echo "-- gl $d ($(diff $S $G/$d/atrous.last_composite.glsl | grep -c '^<') lines edited) round $round"
+          ASVGF_GL_PROGRAM_SOURCE=$G/$d timeout 60 $A bench "${BENCH[@]}" --backend gl 2>&1 | grep -E "^(atrous.5|denoiser)"
+        done
+        echo "-- vulkan round $round"; timeout 60 $A bench "${BENCH[@]}" 2>&1 | grep -E "^(atrous|denoiser)"
+      done | tee $R/gl-composite.txt ;;
+    vk-occupancy)
+      # issue 37: Vulkan's path tracer with its workgroups a SM limited by do-nothing shared memory
+      # (binaries from tools/device/occupancy_probe.sh): if it slows toward OpenGL's time, OpenGL's
+      # register use (over 200 against Vulkan's 72) is what holds its path tracer down.
+      for round in 1 2; do
+        for bin in $A .devbin/asvgf_vkpad*; do
+          echo "-- $bin round $round"; timeout 60 $bin bench "${BENCH[@]}" 2>&1 | grep -E "^(pathtrace|frame) "
+        done
+      done | tee $R/vk-occupancy.txt ;;
     *) echo "measure.sh: unknown step '$step'" >&2; exit 2 ;;
   esac
   save
