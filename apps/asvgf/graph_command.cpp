@@ -59,8 +59,10 @@ int run_graph(GraphOptions& o) {
     auto g = builder.build(settings, scene_gpu, targets);
     auto compiled = runtime.compile(g);
     if (f == o.frame) {
-      std::printf("scene %s, animation %s, method %s, %ux%u\n%s", o.scene.scene.c_str(), o.scene.animation.c_str(),
-                  o.scene.method.c_str(), settings.width, settings.height, compiled.text().c_str());
+      // A scene file has its own animation: --animation names a built-in scene's.
+      const std::string animation = is_scene_file(o.scene.scene) ? "" : ", animation " + o.scene.animation;
+      std::printf("scene %s%s, method %s, %ux%u\n%s", o.scene.scene.c_str(), animation.c_str(), o.scene.method.c_str(),
+                  settings.width, settings.height, compiled.text().c_str());
       if (!o.dot.empty()) {
         render::write_file_atomic(o.dot, compiled.dot());
         std::printf("Graphviz written to %s\n", o.dot.c_str());

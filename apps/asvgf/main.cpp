@@ -11,7 +11,9 @@
 #include "io/atomic_file.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"asvgf: real-time A-SVGF denoising of path-traced frames on a thin HAL (Vulkan, OpenGL and OpenGL ES backends)", "asvgf"};
+  CLI::App app{
+      "asvgf: real-time A-SVGF denoising of path-traced frames on a thin HAL (Vulkan, OpenGL and OpenGL ES backends)",
+      "asvgf"};
   app.set_version_flag("--version", std::string("asvgf ") + ASVGF_VERSION);
   app.require_subcommand(0, 1);
   app.fallthrough(false);

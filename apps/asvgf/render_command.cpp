@@ -8,8 +8,8 @@
 
 #include "commands.hpp"
 #include "frame_files.hpp"
-#include "progress.hpp"
 #include "io/image_io.hpp"
+#include "progress.hpp"
 #include "report/metrics.hpp"
 #include "scene_options.hpp"
 
@@ -70,7 +70,7 @@ int run_render(RenderOptions& o) {
   const std::filesystem::path dir(o.out);
   // No output may replace the scene file or a texture it loaded.
   std::vector<std::pair<std::string, std::filesystem::path>> input_files, output_files;
-  if (std::filesystem::path(o.scene.scene).extension() == ".json") input_files.emplace_back("--scene", o.scene.scene);
+  if (is_scene_file(o.scene.scene)) input_files.emplace_back("--scene", o.scene.scene);
   for (const auto& t : scene.textures) input_files.emplace_back("--scene (a texture)", t.name);
   for (int f = 0; f < frames; ++f)
     for (const char* prefix : {"frame", "reference", "color", "albedo", "normal", "depth", "motion", "gradient"})

@@ -183,7 +183,7 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
   // The report writes many files into `dir` (plots among them): it refuses a folder that holds the
   // scene file or a texture it loaded rather than risk replacing one.
   std::vector<std::pair<std::string, std::filesystem::path>> inputs;
-  if (std::filesystem::path(o.scene.scene).extension() == ".json") inputs.emplace_back("--scene", o.scene.scene);
+  if (is_scene_file(o.scene.scene)) inputs.emplace_back("--scene", o.scene.scene);
   for (const auto& t : scene.textures) inputs.emplace_back("--scene (a texture)", t.name);
   refuse_folder_holding_inputs("--out", dir, inputs);
   // Without glossy materials there is one signal anyway: the built-in split run would repeat its
@@ -396,7 +396,7 @@ std::vector<std::string> scene_list(const std::string& list) {
   const auto builtin = scene::builtin_scenes();
   while (std::getline(ss, token, ',')) {
     if (token.empty()) continue;
-    const bool file = std::filesystem::path(token).extension() == ".json";
+    const bool file = is_scene_file(token);
     if (!file && std::find(builtin.begin(), builtin.end(), token) == builtin.end()) {
       std::string valid;
       for (const auto& n : builtin) valid += (valid.empty() ? "" : ", ") + n;

@@ -178,9 +178,12 @@ void finish_scene_options(SceneOptions& o) {
                                problem->message());
 }
 
+bool is_scene_file(std::string_view scene) {
+  return std::filesystem::path(scene).extension() == ".json";
+}
+
 scene::Scene load_scene(const SceneOptions& o) {
-  const std::filesystem::path path(o.scene);
-  if (path.extension() == ".json") return scene::load_scene_file(path);
+  if (is_scene_file(o.scene)) return scene::load_scene_file(o.scene);
   return scene::builtin_scene(o.scene, o.animation);
 }
 

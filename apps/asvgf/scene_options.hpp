@@ -60,6 +60,8 @@ ImageSize parse_size_option(const std::string& option, const std::string& text);
 std::string chosen_backend(const std::string& option);
 // Whether that is the registry's default backend (commands leave it out of what they print).
 bool default_backend_chosen(const std::string& option);
+// Whether a --scene value names a scene file (.json) rather than a built-in scene.
+bool is_scene_file(std::string_view scene);
 // The scene the options name: built-in, or loaded from the file.
 scene::Scene load_scene(const SceneOptions& options);
 render::RenderSettings render_settings(const SceneOptions& options);

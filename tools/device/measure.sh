@@ -119,6 +119,15 @@ for step in "${steps[@]}"; do
       for anim in light-exit orbit; do
         timeout 200 $A report "${HD[@]}" --animation $anim --frames 12 --methods raw --run def=asvgf "${LM[@]}" \
           --out $R/local-mean-$anim --quiet 2>&1 | tail -1
+        # The energy target's frames: light-exit's still frames 1-3 (the report's column counts
+        # only the frames after the change), from report.csv's image means.
+        python3 - $R/local-mean-$anim/report.csv <<'EOF_PY' | tee $R/local-mean-$anim/still-energy.txt
+import csv, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["frame"] in ("1", "2", "3")]
+for run in dict.fromkeys(r["run"] for r in rows):
+    bias = ["%+.2f%%" % (100 * (float(r["mean"]) / float(r["reference_mean"]) - 1)) for r in rows if r["run"] == run]
+    print("%-8s energy bias on frames 1-3: %s" % (run, " / ".join(bias)))
+EOF_PY
         save
       done
       timeout 60 $A bench "${BENCH[@]}" --local-mean 33 2>&1 | grep -E "^(atrous.5|local_mean|composite|denoiser|frame)" ;;
