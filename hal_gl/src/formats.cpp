@@ -29,6 +29,8 @@ GlFormat gl_format(Format format) {
       return {GL_RG32UI, GL_RG_INTEGER, GL_UNSIGNED_INT};
     case Format::RGBA32Uint:
       return {GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT};
+    case Format::RGBA16Uint:
+      return {GL_RGBA16UI, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT};
     case Format::Undefined:
       break;
   }
@@ -43,6 +45,7 @@ bool es_storage_format(Format format) {
     case Format::RGBA32F:
     case Format::R32Uint:
     case Format::RGBA32Uint:
+    case Format::RGBA16Uint:
       return true;
     default:
       return false;
@@ -98,6 +101,11 @@ std::vector<std::byte> texels_of(Format format, std::array<float, 4> value, std:
       case Format::RGBA32Uint: {
         const std::uint32_t u = v <= 0.0f ? 0u : static_cast<std::uint32_t>(v);
         std::memcpy(texel.data() + 4 * c, &u, 4);
+        break;
+      }
+      case Format::RGBA16Uint: {
+        const auto u = static_cast<std::uint16_t>(v <= 0.0f ? 0.0f : std::fmin(v, 65535.0f));
+        std::memcpy(texel.data() + 2 * c, &u, 2);
         break;
       }
       default:

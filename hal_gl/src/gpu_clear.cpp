@@ -44,7 +44,8 @@ GLuint compile_clear_program() {
 }
 
 bool integer_format(GLenum internal_format) {
-  return internal_format == GL_R32UI || internal_format == GL_RG32UI || internal_format == GL_RGBA32UI;
+  return internal_format == GL_R32UI || internal_format == GL_RG32UI || internal_format == GL_RGBA32UI ||
+         internal_format == GL_RGBA16UI;
 }
 
 }  // namespace

@@ -27,7 +27,8 @@ void dependency(VkCommandBuffer cmd, const std::vector<VkMemoryBarrier2>& memory
 
 StateInfo state_info(State state) {
   switch (state) {
-    case State::Undefined: return {};
+    case State::Undefined:
+      return {};
     // GENERAL for every shader state: storage images are read and written in it, and sampled
     // reads of an image that was just a storage image need no layout change.
     case State::ShaderRead:
@@ -38,9 +39,11 @@ StateInfo state_info(State state) {
       return {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
               VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_IMAGE_LAYOUT_GENERAL};
     case State::CopySrc:
-      return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+      return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+              VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
     case State::CopyDst:
-      return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
+      return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+              VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
     case State::AccelBuildInput:
       return {VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, VK_ACCESS_2_SHADER_READ_BIT,
               VK_IMAGE_LAYOUT_UNDEFINED};
@@ -53,7 +56,8 @@ StateInfo state_info(State state) {
               VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR, VK_IMAGE_LAYOUT_UNDEFINED};
     // A HAL image "presented" is the source of the presenter's blit into the swapchain image.
     case State::Present:
-      return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+      return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+              VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
   }
   return {};
 }
@@ -290,8 +294,7 @@ void VulkanCommandList::clear_image(ImageHandle handle, std::array<float, 4> val
   VkCommandBuffer cmd = recording();
   const ImageObject& i = device_.images.get(handle.id, "image");
   VkClearColorValue color{};
-  const bool integer = i.desc.format == Format::R32Uint || i.desc.format == Format::RG32Uint ||
-                       i.desc.format == Format::RGBA32Uint;
+  const bool integer = format_is_uint(i.desc.format);
   for (int c = 0; c < 4; ++c) {
     if (integer)
       color.uint32[c] = value[c] <= 0.0f ? 0u : static_cast<std::uint32_t>(value[c]);

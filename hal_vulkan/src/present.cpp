@@ -8,9 +8,9 @@
 #include <array>
 
 #include "check.hpp"
-#include "hal/layer.hpp"
 #include "command_list.hpp"
 #include "device.hpp"
+#include "hal/layer.hpp"
 #include "hal_vulkan/presenter.hpp"
 
 namespace hal::vulkan {
@@ -104,7 +104,8 @@ struct Presenter::Impl {
 
     VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
     info.surface = surface;
-    info.minImageCount = caps.maxImageCount ? std::min(caps.minImageCount + 1, caps.maxImageCount) : caps.minImageCount + 1;
+    info.minImageCount =
+        caps.maxImageCount ? std::min(caps.minImageCount + 1, caps.maxImageCount) : caps.minImageCount + 1;
     info.imageFormat = chosen.format;
     info.imageColorSpace = chosen.colorSpace;
     info.imageExtent = size;
@@ -191,8 +192,12 @@ Presenter::~Presenter() {
   if (p.surface) vkDestroySurfaceKHR(p.device.instance(), p.surface, nullptr);
 }
 
-std::pair<std::uint32_t, std::uint32_t> Presenter::extent() const { return {impl_->extent.width, impl_->extent.height}; }
-std::uint32_t Presenter::swapchain_generation() const { return impl_->generation; }
+std::pair<std::uint32_t, std::uint32_t> Presenter::extent() const {
+  return {impl_->extent.width, impl_->extent.height};
+}
+std::uint32_t Presenter::swapchain_generation() const {
+  return impl_->generation;
+}
 
 bool Presenter::present(hal::ImageHandle handle) {
   Impl& p = *impl_;
@@ -201,7 +206,7 @@ bool Presenter::present(hal::ImageHandle handle) {
   if (!has(source.desc.usage, ImageUsage::CopySrc))
     throw Error(ErrorKind::InvalidUsage, source.name, "presented images need CopySrc usage");
   const Format f = source.desc.format;
-  if (f == Format::R32Uint || f == Format::RG32Uint || f == Format::RGBA32Uint)
+  if (format_is_uint(f))
     throw Error(ErrorKind::InvalidUsage, source.name, "integer images cannot be blitted to the window");
 
   // Resize: recreate when the framebuffer no longer matches the swapchain.

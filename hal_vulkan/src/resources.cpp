@@ -29,18 +29,32 @@ VkFormatFeatureFlags2 needed_features(ImageUsage usage) {
 
 VkFormat to_vk(Format format) {
   switch (format) {
-    case Format::R8Unorm: return VK_FORMAT_R8_UNORM;
-    case Format::RGBA8Unorm: return VK_FORMAT_R8G8B8A8_UNORM;
-    case Format::R16F: return VK_FORMAT_R16_SFLOAT;
-    case Format::RG16F: return VK_FORMAT_R16G16_SFLOAT;
-    case Format::RGBA16F: return VK_FORMAT_R16G16B16A16_SFLOAT;
-    case Format::R32F: return VK_FORMAT_R32_SFLOAT;
-    case Format::RG32F: return VK_FORMAT_R32G32_SFLOAT;
-    case Format::RGBA32F: return VK_FORMAT_R32G32B32A32_SFLOAT;
-    case Format::R32Uint: return VK_FORMAT_R32_UINT;
-    case Format::RG32Uint: return VK_FORMAT_R32G32_UINT;
-    case Format::RGBA32Uint: return VK_FORMAT_R32G32B32A32_UINT;
-    case Format::Undefined: break;
+    case Format::R8Unorm:
+      return VK_FORMAT_R8_UNORM;
+    case Format::RGBA8Unorm:
+      return VK_FORMAT_R8G8B8A8_UNORM;
+    case Format::R16F:
+      return VK_FORMAT_R16_SFLOAT;
+    case Format::RG16F:
+      return VK_FORMAT_R16G16_SFLOAT;
+    case Format::RGBA16F:
+      return VK_FORMAT_R16G16B16A16_SFLOAT;
+    case Format::R32F:
+      return VK_FORMAT_R32_SFLOAT;
+    case Format::RG32F:
+      return VK_FORMAT_R32G32_SFLOAT;
+    case Format::RGBA32F:
+      return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case Format::R32Uint:
+      return VK_FORMAT_R32_UINT;
+    case Format::RG32Uint:
+      return VK_FORMAT_R32G32_UINT;
+    case Format::RGBA32Uint:
+      return VK_FORMAT_R32G32B32A32_UINT;
+    case Format::RGBA16Uint:
+      return VK_FORMAT_R16G16B16A16_UINT;
+    case Format::Undefined:
+      break;
   }
   return VK_FORMAT_UNDEFINED;
 }
@@ -117,12 +131,12 @@ ImageHandle VulkanDevice::create_image(const ImageDesc& desc) {
   info.usage = to_vk(desc.usage);
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   VkImageFormatProperties limits;
-  const VkResult supported = vkGetPhysicalDeviceImageFormatProperties(physical_, format, info.imageType, info.tiling,
-                                                                      info.usage, 0, &limits);
+  const VkResult supported =
+      vkGetPhysicalDeviceImageFormatProperties(physical_, format, info.imageType, info.tiling, info.usage, 0, &limits);
   if (supported == VK_ERROR_FORMAT_NOT_SUPPORTED)
-    throw Error(ErrorKind::Unsupported, desc.name,
-                "format " + std::string(format_name(desc.format)) + " with this usage is not supported by " +
-                    adapter().name);
+    throw Error(
+        ErrorKind::Unsupported, desc.name,
+        "format " + std::string(format_name(desc.format)) + " with this usage is not supported by " + adapter().name);
   check_result(supported, "vkGetPhysicalDeviceImageFormatProperties", desc.name);
   if (desc.width > limits.maxExtent.width || desc.height > limits.maxExtent.height)
     throw Error(ErrorKind::InvalidDescriptor, desc.name,

@@ -25,9 +25,10 @@ struct GraphDenoiserInputs {
   graph::ResourceId illumination = 0;
   // read: any float format with xy = previous minus current pixel position (our renderer: RGBA16F)
   graph::ResourceId motion = 0;
-  // read, and its history: persistent RGBA32F, the packed surface: x linear view depth, y its
-  // gradient max(|dz/dx|, |dz/dy|), zw the octahedral-encoded unit normal (shaders/common/octahedral.glsl);
-  // background where x is not finite, <= 0 or >= kBackgroundDepth (asvgf::is_background_depth).
+  // read, and its history: persistent RGBA16UI, the packed surface (shaders/common/depth_normal.glsl):
+  // linear view depth, its gradient max(|dz/dx|, |dz/dy|) and the octahedral-encoded unit normal
+  // in 8 bytes; all 0 on background (a depth not finite, <= 0 or >= kBackgroundDepth:
+  // asvgf::is_background_depth).
   graph::ResourceId depth_normal = 0;
   // read: RGBA16F, what composite re-modulates by; also the short-history variance estimate's
   // scale (it compares radiance, the neighbours re-modulated by the pixel's albedo)

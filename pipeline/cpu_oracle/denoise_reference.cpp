@@ -6,6 +6,7 @@
 
 #include "asvgf/denoiser.hpp"
 #include "cpu_oracle/denoise_math.hpp"
+#include "cpu_oracle/depth_normal.hpp"
 
 namespace asvgf::reference {
 namespace {
@@ -65,11 +66,14 @@ ImageD pack_surface(const ImageD& depth, const ImageD& normal, bool depth_gradie
       double dz = depth.at(x, y, 1);
       if (!depth_gradient_given || !std::isfinite(dz) || dz < 0)
         dz = std::max(axis_gradient(x, y, 1, 0, z), axis_gradient(x, y, 0, 1, z));
-      const auto e = oct_encode(n);
-      out.at(x, y, 0) = z;
-      out.at(x, y, 1) = dz;
-      out.at(x, y, 2) = e[0];
-      out.at(x, y, 3) = e[1];
+      // As the texel holds them (cpu_oracle/depth_normal.hpp).
+      const DepthNormal t = unpack_depth_normal(
+          pack_depth_normal(static_cast<float>(z), static_cast<float>(dz),
+                            {static_cast<float>(n[0]), static_cast<float>(n[1]), static_cast<float>(n[2])}));
+      out.at(x, y, 0) = t.z;
+      out.at(x, y, 1) = t.dz;
+      out.at(x, y, 2) = t.oct[0];
+      out.at(x, y, 3) = t.oct[1];
     }
   return out;
 }

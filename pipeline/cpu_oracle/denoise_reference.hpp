@@ -2,7 +2,8 @@
 // (shaders/denoise/*.comp), used by tests. Each function mirrors its shader: same taps, weights,
 // guards and clamps; only the precision differs (and fp16 stores, which the tests' tolerances cover).
 // Images use the channel layouts of the GPU resources:
-//   illumination 4 (rgb), depth_normal 4 (z, dz, oct normal), motion 2, gradient_prev 2,
+//   illumination 4 (rgb), depth_normal 4 (z, dz, oct normal: what the GPU's 8-byte texel holds,
+//   cpu_oracle/depth_normal.hpp), motion 2, gradient_prev 2,
 //   gradient 4 (delta, Delta, 0, 0), colour images 4 (rgb, variance), moments 4 (E[l], sqrt(Var[l]), n, 0),
 //   albedo 4.
 #pragma once
@@ -14,7 +15,8 @@
 namespace asvgf::reference {
 
 // pack_surface.comp: depth (x linear depth, y its gradient when `depth_gradient_given`) and normal
-// (xyz) as depth_normal (z, dz, octahedral normal), all zero on background.
+// (xyz) as depth_normal (z, dz, octahedral normal, each rounded as the texel rounds it), all zero on
+// background.
 ImageD pack_surface(const ImageD& depth, const ImageD& normal, bool depth_gradient_given);
 
 // convert_inputs.comp: a renderer's colour (radiance when `color_is_radiance`), albedo and motion

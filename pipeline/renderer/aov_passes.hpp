@@ -12,7 +12,7 @@
 namespace asvgf::passes {
 
 struct ExportAovResources {
-  graph::ResourceId depth_normal = 0;                       // read: RGBA32F (z, dz, octahedral normal)
+  graph::ResourceId depth_normal = 0;                       // read: RGBA16UI (shaders/common/depth_normal.glsl)
   graph::ResourceId albedo = 0;                             // read: RGBA16F
   graph::ResourceId depth = 0, normal = 0, albedo_out = 0;  // written: RGBA32F
 };

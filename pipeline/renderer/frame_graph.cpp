@@ -75,7 +75,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   g.output(rays, hal::State::CopySrc);
   // Persistent: read next frame as histories.
   const ResourceId vbuffer = g.add_image("visibility", w, h, F::RGBA32Uint, Lifetime::Persistent);
-  const ResourceId depth_normal = g.add_image("depth_normal", w, h, F::RGBA32F, Lifetime::Persistent);
+  const ResourceId depth_normal = g.add_image("depth_normal", w, h, F::RGBA16Uint, Lifetime::Persistent);
   const ResourceId seeds = g.add_image("rng_seed", w, h, F::R32Uint, Lifetime::Persistent);
   // The filtering methods' samples in half floats (pathtrace.comp: what the denoiser keeps of them);
   // raw output and the reference unclamped.

@@ -5,15 +5,16 @@
 #define ASVGF_COMMON_DENOISE_GLSL
 
 #include "common/color.glsl"
-#include "common/octahedral.glsl"
+#include "common/depth_normal.glsl"
 
-// depth_normal texel: x linear view depth (0 = no hit), y max(|dz/dx|, |dz/dy|), zw octahedral normal.
+// A pixel's surface: linear view depth (0 = no hit), max(|dz/dx|, |dz/dy|), unit normal.
 struct Surface {
   float z;
   float dz;
   vec3 n;
 };
-Surface surface_from(vec4 t) { return Surface(t.x, t.y, oct_decode(t.zw)); }
+// From the depth_normal texel (common/depth_normal.glsl).
+Surface surface_from(uvec4 t) { return Surface(depth_normal_depth(t), depth_normal_gradient(t), depth_normal_normal(t)); }
 bool hit(Surface s) { return s.z > 0.0; }
 
 // The luminance moments as the temporal pass stores them, RGBA16F (E[l], sqrt(Var[l]), n, 0): 8

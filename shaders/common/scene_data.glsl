@@ -79,18 +79,6 @@ vec3 camera_project(Camera c, vec3 p, uint width, uint height) {
   return vec3((ndc.x + 1.0) * 0.5 * float(width), (1.0 - ndc.y) * 0.5 * float(height), z);
 }
 
-// Octahedral normal encoding (Meyer et al. 2010; Cigolle et al. JCGT 2014) in [-1,1]^2.
-vec2 oct_wrap(vec2 v) { return (1.0 - abs(v.yx)) * vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0); }
-vec2 encode_normal(vec3 n) {
-  n /= abs(n.x) + abs(n.y) + abs(n.z);
-  return n.z >= 0.0 ? n.xy : oct_wrap(n.xy);
-}
-vec3 decode_normal(vec2 e) {
-  vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
-  if (n.z < 0.0) n.xy = oct_wrap(n.xy);
-  return normalize(n);
-}
-
 #include "common/color.glsl"  // luminance(), for the glossy lobe's choice and the split signals
 
 #endif

@@ -16,7 +16,7 @@
 // a dispatch fewer.
 // The packed texel has no room for the depth gradient, which only the centre needs: the first
 // iteration copies it from depth_normal into an R32F image and the packed-in iterations read that
-// (4 bytes a pixel instead of depth_normal's 16).
+// (4 bytes a pixel instead of depth_normal's 8).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -62,7 +62,7 @@ layout(set = 0, binding = 1) uniform texture2D color_in;  // rgb colour, a varia
 #ifdef PACKED_IN
 layout(set = 0, binding = 2) uniform texture2D depth_gradient;
 #else
-layout(set = 0, binding = 2) uniform texture2D depth_normal;
+layout(set = 0, binding = 2) uniform utexture2D depth_normal;
 #endif
 #ifdef PACKED_OUT
 layout(set = 0, binding = 3, std430) writeonly buffer ColorOut { uvec4 texels[]; } color_out;
@@ -158,7 +158,7 @@ void filter_pixel(ivec2 p) {
 #ifdef PACKED_IN
   const float dz = texelFetch(depth_gradient, p, 0).x;
 #else
-  const float dz = texelFetch(depth_normal, p, 0).y;
+  const float dz = depth_normal_gradient(texelFetch(depth_normal, p, 0));
 #endif
   Surface center = Surface(c.z, dz, c.n);
   vec4 result = c.color;

@@ -4,8 +4,8 @@
 // itself is what is being reconstructed.
 // The guide is depth_normal at each stratum's centre pixel: 1 texel in 9. Variants: GUIDE_OUT (the
 // first of several iterations) also writes those texels into a 1/3-resolution image; GUIDE_IN (the
-// later ones) reads them there instead of depth_normal (whose every iteration counted 16 bytes a
-// pixel against the strata's 1.8).
+// later ones) reads them there instead of depth_normal (whose every iteration counted 8 bytes a
+// pixel against the strata's 0.9).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -26,19 +26,19 @@ layout(set = 0, binding = 0) uniform Params {
 } params;
 layout(set = 0, binding = 1) uniform texture2D gradient_in;
 #ifdef GUIDE_IN
-layout(set = 0, binding = 2) uniform texture2D strata_guide;
+layout(set = 0, binding = 2) uniform utexture2D strata_guide;
 #else
-layout(set = 0, binding = 2) uniform texture2D depth_normal;
+layout(set = 0, binding = 2) uniform utexture2D depth_normal;
 #endif
 layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D gradient_out;
 #ifdef GUIDE_OUT
-layout(set = 0, binding = 4, rgba32f) writeonly uniform image2D strata_guide_out;
+layout(set = 0, binding = 4, rgba16ui) writeonly uniform uimage2D strata_guide_out;
 #endif
 
 ivec2 guide_pixel(ivec2 s) { return min(3 * s + 1, ivec2(params.width, params.height) - 1); }
 
 // depth_normal's texel at stratum s's centre pixel.
-vec4 guide_texel(ivec2 s) {
+uvec4 guide_texel(ivec2 s) {
 #ifdef GUIDE_IN
   return texelFetch(strata_guide, s, 0);
 #else
@@ -50,7 +50,7 @@ void main() {
   ivec2 s = invocation_pixel();
   if (!inside(s, params.gradient_width, params.gradient_height)) return;
   ivec2 gp = guide_pixel(s);
-  const vec4 center_texel = guide_texel(s);
+  const uvec4 center_texel = guide_texel(s);
 #ifdef GUIDE_OUT
   imageStore(strata_guide_out, s, center_texel);
 #endif

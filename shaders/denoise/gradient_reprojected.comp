@@ -30,8 +30,8 @@ layout(set = 0, binding = 0) uniform Params {
 } params;
 layout(set = 0, binding = 1) uniform texture2D illumination;
 layout(set = 0, binding = 2) uniform texture2D motion;
-layout(set = 0, binding = 3) uniform texture2D depth_normal;
-layout(set = 0, binding = 4) uniform texture2D prev_depth_normal;
+layout(set = 0, binding = 3) uniform utexture2D depth_normal;
+layout(set = 0, binding = 4) uniform utexture2D prev_depth_normal;
 layout(set = 0, binding = 5) uniform texture2D prev_noisy_luminance;
 layout(set = 0, binding = 6, r32f) writeonly uniform image2D noisy_luminance;
 layout(set = 0, binding = 7, rgba16f) writeonly uniform image2D gradient;

@@ -1,5 +1,5 @@
 // pack_surface.comp: the renderer's linear depth and world-space normal as the denoiser's
-// depth_normal texel (common/denoise.glsl: z, depth gradient, octahedral normal). A background pixel
+// depth_normal texel (common/depth_normal.glsl: depth, depth gradient, octahedral normal). A background pixel
 // (common/surface.glsl: no finite depth in (0, 1e9), or a zero normal) is all zero: no filter weight
 // reaches it and no history is reprojected onto it. The depth gradient is the
 // renderer's (depth.y) when given, else estimated from the neighbours: per axis the smaller
@@ -11,7 +11,7 @@
 #extension GL_EXT_samplerless_texture_functions : require
 #include "common/color.glsl"
 #include "common/compute.glsl"
-#include "common/octahedral.glsl"
+#include "common/depth_normal.glsl"
 #include "common/surface.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -24,7 +24,7 @@ layout(set = 0, binding = 0) uniform Params {
 } params;
 layout(set = 0, binding = 1) uniform texture2D depth;   // x: linear view depth; y: its gradient (optional)
 layout(set = 0, binding = 2) uniform texture2D normal;  // xyz: world-space normal
-layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D depth_normal;
+layout(set = 0, binding = 3, rgba16ui) writeonly uniform uimage2D depth_normal;
 
 // The depth at q, or 0 outside the image and on background.
 float depth_at(ivec2 q) {
@@ -47,12 +47,12 @@ void main() {
   if (!inside(p, params.width, params.height)) return;
   vec2 zg = texelFetch(depth, p, 0).xy;
   vec3 n = texelFetch(normal, p, 0).xyz;
-  vec4 texel = vec4(0.0);
+  uvec4 texel = uvec4(0u);
   if (!is_background(zg.x, n)) {
     float dz = zg.y;
     if (params.depth_gradient_given == 0u || not_finite(dz) || dz < 0.0)
       dz = max(axis_gradient(p, zg.x, ivec2(1, 0)), axis_gradient(p, zg.x, ivec2(0, 1)));
-    texel = vec4(zg.x, dz, oct_encode(n));
+    texel = pack_depth_normal(zg.x, dz, n);
   }
   imageStore(depth_normal, p, texel);
 }

@@ -23,7 +23,7 @@ layout(set = 0, binding = 2) uniform texture2D albedo;
 layout(set = 0, binding = 3) uniform texture2D normal;
 layout(set = 0, binding = 4) uniform texture2D depth;
 layout(set = 0, binding = 5) uniform texture2D motion;
-layout(set = 0, binding = 6) uniform texture2D prev_depth_normal;
+layout(set = 0, binding = 6) uniform utexture2D prev_depth_normal;
 // Indices as kInputCounts in pipeline/denoiser/api/input_report.hpp.
 layout(set = 0, binding = 7) buffer Counts { uint values[16]; } counts;
 
@@ -37,7 +37,7 @@ void count(uint index, bool condition) {
 bool lands_on_same_surface(ivec2 p, vec2 d, float z) {
   vec2 q = vec2(p) + 0.5 + d;
   if (!(q.x >= 0.0 && q.y >= 0.0 && q.x < float(params.width) && q.y < float(params.height))) return false;
-  float zp = texelFetch(prev_depth_normal, ivec2(q), 0).x;
+  float zp = depth_normal_depth(texelFetch(prev_depth_normal, ivec2(q), 0));
   return zp > 0.0 && abs(zp - z) <= kSameSurface * z;
 }
 

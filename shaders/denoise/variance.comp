@@ -24,7 +24,7 @@ layout(set = 0, binding = 0) uniform Params {
 } params;
 layout(set = 0, binding = 1) uniform texture2D integrated;
 layout(set = 0, binding = 2) uniform texture2D moments;  // E[l], sqrt(Var[l]), history length
-layout(set = 0, binding = 3) uniform texture2D depth_normal;
+layout(set = 0, binding = 3) uniform utexture2D depth_normal;
 layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_variance;
 layout(set = 0, binding = 5) uniform texture2D albedo;  // what the signal is re-modulated by
 

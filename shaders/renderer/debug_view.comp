@@ -24,7 +24,7 @@ layout(set = 0, binding = 0, std140) uniform Params {
   float antilag;      // the temporal pass's gradient response (DenoiseSettings::antilag)
 } params;
 
-layout(set = 0, binding = 1) uniform texture2D depth_normal;
+layout(set = 0, binding = 1) uniform utexture2D depth_normal;
 layout(set = 0, binding = 2) uniform texture2D motion;
 layout(set = 0, binding = 3) uniform texture2D albedo;
 layout(set = 0, binding = 4) uniform texture2D illumination;
@@ -46,12 +46,13 @@ float gradient_lambda(ivec2 p) {
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= int(params.width) || p.y >= int(params.height)) return;
-  vec4 dn = texelFetch(depth_normal, p, 0);
+  const uvec4 dn = texelFetch(depth_normal, p, 0);
+  const float z = depth_normal_depth(dn);
   vec3 c = vec3(0.0);
   if (params.mode == 0u) {
-    c = dn.x > 0.0 ? decode_normal(dn.zw) * 0.5 + 0.5 : vec3(0.0);
+    c = z > 0.0 ? depth_normal_normal(dn) * 0.5 + 0.5 : vec3(0.0);
   } else if (params.mode == 1u) {
-    c = vec3(clamp(dn.x * params.depth_scale, 0.0, 1.0));
+    c = vec3(clamp(z * params.depth_scale, 0.0, 1.0));
   } else if (params.mode == 2u) {
     vec2 m = texelFetch(motion, p, 0).xy;
     c = abs(m.x) > 1e5 ? vec3(1.0, 0.0, 1.0) : vec3(clamp(0.5 + m * 0.05, 0.0, 1.0), 0.5);

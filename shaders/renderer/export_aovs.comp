@@ -14,7 +14,7 @@ layout(set = 0, binding = 0) uniform Params {
   uint width;
   uint height;
 } params;
-layout(set = 0, binding = 1) uniform texture2D depth_normal;
+layout(set = 0, binding = 1) uniform utexture2D depth_normal;
 layout(set = 0, binding = 2) uniform texture2D albedo;
 layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D depth_out;
 layout(set = 0, binding = 4, rgba32f) writeonly uniform image2D normal_out;

@@ -7,6 +7,7 @@
 #extension GL_EXT_ray_query : require
 #endif
 #include "common/scene_data.glsl"
+#include "common/depth_normal.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -27,7 +28,7 @@ Camera prev_cam;
 
 layout(set = 0, binding = 6, std430) readonly buffer PreviousTriangles { Triangle values[]; } previous_triangles;
 layout(set = 0, binding = 10, rgba32ui) writeonly uniform uimage2D visibility;
-layout(set = 0, binding = 11, rgba32f) writeonly uniform image2D depth_normal;
+layout(set = 0, binding = 11, rgba16ui) writeonly uniform uimage2D depth_normal;  // common/depth_normal.glsl
 // Half floats: 2^-11 of the motion (0.05 px at 100 px) is far below what the bilinear reprojection
 // resolves, and 8 bytes a pixel fewer written here and read by the temporal pass. rgba: ESSL 310 has
 // no rg formats.
@@ -56,7 +57,7 @@ void main() {
   int sphere = hit_sphere_lights(o, d, 0.0, h.hit ? h.t : 1e30, params.sphere_count, t_sphere);
 
   uvec4 vis = uvec4(0u);
-  vec4 dn = vec4(0.0);
+  uvec4 dn = uvec4(0u);
   vec4 alb = vec4(1.0, 1.0, 1.0, 0.0);
   vec3 prev_point;
   bool at_infinity = false;
@@ -68,7 +69,7 @@ void main() {
     float z = dot(x - o, cam.forward.xyz);
     float gx = abs(plane_depth(centre + vec2(1.0, 0.0), x, n) - z);
     float gy = abs(plane_depth(centre + vec2(0.0, 1.0), x, n) - z);
-    dn = vec4(z, max(gx, gy), encode_normal(n));
+    dn = pack_depth_normal(z, max(gx, gy), n);
     alb = vec4(1.0);
     prev_point = x - l.position + l.prev_position;
   } else if (h.hit) {
@@ -80,7 +81,7 @@ void main() {
     float z = dot(x - o, cam.forward.xyz);
     float gx = abs(plane_depth(centre + vec2(1.0, 0.0), x, n) - z);
     float gy = abs(plane_depth(centre + vec2(0.0, 1.0), x, n) - z);
-    dn = vec4(z, max(gx, gy), encode_normal(n));
+    dn = pack_depth_normal(z, max(gx, gy), n);
     if (params.demodulate == 1u) alb = vec4(demodulation_albedo(h.triangle, h.bary, -dot(n, d)), 1.0);
     if (params.demodulate == 2u) {
       vec3 diffuse, specular;

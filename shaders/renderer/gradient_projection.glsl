@@ -6,6 +6,7 @@
 
 #include "common/random.glsl"
 #include "common/scene_data.glsl"
+#include "common/depth_normal.glsl"
 
 // Needs: params (width, height, strata_width, frame, camera), `triangles` (this frame's),
 // `prev_visibility`, `prev_rng_seed`, `depth_normal` (this frame's), and a global `Camera cam`
@@ -49,10 +50,11 @@ Projection project_sample(ivec2 s) {
   vec3 q3 = camera_project(cam, x, params.width, params.height);
   ivec2 q = ivec2(floor(q3.xy));
   ok = ok && q3.z > 0.0 && q.x >= 0 && q.y >= 0 && q.x < int(params.width) && q.y < int(params.height);
-  vec4 dn = texelFetch(depth_normal, clamp(q, ivec2(0), ivec2(int(params.width) - 1, int(params.height) - 1)), 0);
+  const uvec4 dn = texelFetch(depth_normal, clamp(q, ivec2(0), ivec2(int(params.width) - 1, int(params.height) - 1)), 0);
+  const float z = depth_normal_depth(dn);
   // The same surface: depth within a few pixels' worth of depth gradient, normals aligned.
-  float tolerance = max(1e-3 * dn.x, 4.0 * dn.y);
-  ok = ok && dn.x > 0.0 && abs(q3.z - dn.x) <= tolerance && dot(decode_normal(dn.zw), n) >= 0.9;
+  float tolerance = max(1e-3 * z, 4.0 * depth_normal_gradient(dn));
+  ok = ok && z > 0.0 && abs(q3.z - z) <= tolerance && dot(depth_normal_normal(dn), n) >= 0.9;
   r.ok = ok;
   r.to = q;
   return r;

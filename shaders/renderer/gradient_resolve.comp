@@ -26,7 +26,7 @@ layout(set = 0, binding = 3, std430) readonly buffer Triangles { Triangle values
 layout(set = 0, binding = 10) uniform utexture2D prev_visibility;
 layout(set = 0, binding = 11) uniform utexture2D prev_rng_seed;
 layout(set = 0, binding = 12) uniform texture2D prev_illumination;
-layout(set = 0, binding = 13) uniform texture2D depth_normal;
+layout(set = 0, binding = 13) uniform utexture2D depth_normal;
 layout(set = 0, binding = 14, std430) readonly buffer Claims { uint values[]; } claims;
 layout(set = 0, binding = 15, rgba32ui) writeonly uniform uimage2D gradient_seeds;
 layout(set = 0, binding = 16, rgba32f) writeonly uniform image2D gradient_prev;  // rgba: ESSL 310 has no rg formats

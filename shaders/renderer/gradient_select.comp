@@ -26,7 +26,7 @@ layout(set = 0, binding = 0, std140) uniform Params {
 layout(set = 0, binding = 3, std430) readonly buffer Triangles { Triangle values[]; } triangles;
 layout(set = 0, binding = 10) uniform utexture2D prev_visibility;
 layout(set = 0, binding = 11) uniform utexture2D prev_rng_seed;
-layout(set = 0, binding = 13) uniform texture2D depth_normal;
+layout(set = 0, binding = 13) uniform utexture2D depth_normal;
 layout(set = 0, binding = 14, std430) buffer Claims { uint values[]; } claims;
 
 Camera cam;

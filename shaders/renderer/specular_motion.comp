@@ -23,7 +23,7 @@ layout(set = 0, binding = 0, std140) uniform Params {
   uint pad1;
 } params;
 
-layout(set = 0, binding = 1) uniform texture2D depth_normal;
+layout(set = 0, binding = 1) uniform utexture2D depth_normal;
 layout(set = 0, binding = 2) uniform texture2D motion;
 layout(set = 0, binding = 3) uniform texture2D specular;  // a: the first specular ray's length, -1 none hit, 0 no ray
 layout(set = 0, binding = 4, rgba32f) writeonly uniform image2D specular_motion;

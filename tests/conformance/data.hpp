@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <cstring>
 #include <random>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <span>
 #include <vector>
 
 #include "hal/shader.hpp"
@@ -47,6 +47,11 @@ inline std::vector<std::byte> random_texels(hal::Format format, std::uint32_t co
       case hal::Format::RGBA32F: {
         const float v = std::uniform_real_distribution<float>(-1e4f, 1e4f)(rng);
         put(&v, 4);
+        break;
+      }
+      case hal::Format::RGBA16Uint: {
+        const auto v = static_cast<std::uint16_t>(rng());
+        put(&v, 2);
         break;
       }
       default: {

@@ -29,9 +29,11 @@ namespace {
 
 // Bounds for "the same surface": an order of magnitude above what was measured, far below what a
 // wrong hit point, normal or bounce would give; for the half-float motion and illumination, one
-// half step (2^-10 relative at most) above that.
+// half step (2^-10 relative at most) above that, and for the depth gradient and normal one step of
+// their encodings (shaders/common/depth_normal.glsl).
 constexpr double kDepthRelative = 1e-4, kNormalAbsolute = 1e-4, kBaryAbsolute = 1e-5, kMotionPixels = 1e-4,
-                 kIlluminationRelative = 1e-4, kHalfStep = 0x1p-10;
+                 kIlluminationRelative = 1e-4, kHalfStep = 0x1p-10, kGradientStep = 0x1p-8,
+                 kOctahedralStep = 1.0 / 2047;
 constexpr float kOnEdge = 1e-5f;  // smallest barycentric weight of a hit on an edge
 
 float as_float(std::uint32_t u) {
@@ -77,8 +79,13 @@ Explained explain(const FrameInputs& got, const FrameInputs& expected) {
       continue;
     }
     double d[5] = {relative(a.depth_normal[4 * p], b.depth_normal[4 * p], 1e-6), 0, 0, 0, 0};
-    for (int c = 1; c < 4; ++c)
-      d[1] = std::max(d[1], double(std::fabs(a.depth_normal[4 * p + c] - b.depth_normal[4 * p + c])));
+    // The depth gradient and the octahedral normal as the G-buffer's texel holds them: a rounding
+    // of their inputs may flip one step of the encoding (bfloat16: 2^-8 relative; snorm12: 1/2047).
+    const double za = a.depth_normal[4 * p + 1], zb = b.depth_normal[4 * p + 1];
+    d[1] = std::max(0.0, std::fabs(za - zb) - kGradientStep * std::max(std::fabs(za), std::fabs(zb)));
+    for (int c = 2; c < 4; ++c)
+      d[1] = std::max(
+          d[1], std::fabs(double(a.depth_normal[4 * p + c]) - double(b.depth_normal[4 * p + c])) - kOctahedralStep);
     for (int c = 2; c < 4; ++c)
       d[2] = std::max(d[2], double(std::fabs(as_float(a.visibility[4 * p + c]) - as_float(b.visibility[4 * p + c]))));
     // Motion beyond one half step of its magnitude (in pixels).

@@ -76,15 +76,15 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
     ImageD integrated, moments;
     for (int frame = 0; frame < 2; ++frame) {
       RenderGraph g;
-      const auto dn = g.add_image("depth_normal", kW, kH, F::RGBA32F, Lifetime::Persistent);
+      const auto dn = g.add_image("depth_normal", kW, kH, F::RGBA16Uint, Lifetime::Persistent);
       const auto color = g.add_image("color_history", kW, kH, F::RGBA16F, Lifetime::Persistent);
       const auto mom = g.add_image("moments", kW, kH, F::RGBA16F, Lifetime::Persistent);
       if (frame == 0) {
-        harness.fill(g, dn, prev_dn);
+        harness.fill(g, dn, depth_normal_texels(prev_dn));
         harness.fill(g, color, prev_color);
         harness.fill(g, mom, prev_moments);
       } else {
-        harness.fill(g, dn, dn_now);
+        harness.fill(g, dn, depth_normal_texels(dn_now));
         passes::TemporalResources res;
         res.illumination = harness.input(g, "illumination", illumination, F::RGBA32F);
         res.motion = harness.input(g, "motion", motion, F::RGBA32F);
@@ -125,7 +125,8 @@ TEST_CASE("denoise passes: temporal and atrous match the CPU reference on frames
       RenderGraph g;
       const auto out = g.add_image("atrous_out", kW, kH, F::RGBA16F);
       passes::AtrousResources res{harness.input(g, "color_in", color, F::RGBA16F),
-                                  harness.input(g, "depth_normal", dn, F::RGBA32F), out, std::nullopt};
+                                  harness.input(g, "depth_normal", depth_normal_texels(dn), F::RGBA16Uint), out,
+                                  std::nullopt};
       passes::add_atrous(g, pipelines, res, iteration, settings);
       ImageD got;
       harness.readback(g, out, &got);

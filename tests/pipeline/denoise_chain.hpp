@@ -38,8 +38,8 @@ class DenoiserChain {
     const auto w = static_cast<std::uint32_t>(in.illumination.width),
                h = static_cast<std::uint32_t>(in.illumination.height);
     asvgf::graph::RenderGraph g;
-    const auto dn = g.add_image("depth_normal", w, h, Format::RGBA32F, asvgf::graph::Lifetime::Persistent);
-    harness_.fill(g, dn, in.depth_normal);
+    const auto dn = g.add_image("depth_normal", w, h, Format::RGBA16Uint, asvgf::graph::Lifetime::Persistent);
+    harness_.fill(g, dn, depth_normal_texels(in.depth_normal));
     asvgf::passes::GraphDenoiserInputs d;
     d.illumination = harness_.input(g, "illumination", in.illumination, Format::RGBA32F);
     d.motion = harness_.input(g, "motion", in.motion, Format::RG32F);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "asvgf/graph_runtime.hpp"
+#include "cpu_oracle/depth_normal.hpp"
 #include "cpu_oracle/image.hpp"
 #include "cpu_oracle/octahedral.hpp"
 #include "hal/hal.hpp"
@@ -90,6 +91,11 @@ inline std::vector<std::byte> encode(const ImageD& img, hal::Format format) {
             std::memcpy(out.data() + at, &u, 4), at += 4;
             break;
           }
+          case hal::Format::RGBA16Uint: {
+            const auto u = static_cast<std::uint16_t>(v);
+            std::memcpy(out.data() + at, &u, 2), at += 2;
+            break;
+          }
           default: {
             const auto f = static_cast<float>(v);
             std::memcpy(out.data() + at, &f, 4), at += 4;
@@ -128,6 +134,12 @@ inline ImageD decode(std::span<const std::byte> bytes, int w, int h, hal::Format
             out.at(x, y, c) = u;
             break;
           }
+          case hal::Format::RGBA16Uint: {
+            std::uint16_t u;
+            std::memcpy(&u, bytes.data() + at, 2), at += 2;
+            out.at(x, y, c) = u;
+            break;
+          }
           default: {
             float f;
             std::memcpy(&f, bytes.data() + at, 4), at += 4;
@@ -146,6 +158,41 @@ inline ImageD quantize(const ImageD& img, hal::Format format) {
     for (int x = 0; x < img.width; ++x)
       for (int c = 0; c < img.channels; ++c) out.at(x, y, c) = c < q.channels ? q.at(x, y, c) : 0.0;
   return out;
+}
+
+// ---- depth_normal texels (shaders/common/depth_normal.glsl) ------------------------------------
+// The references take depth_normal as (z, dz, octahedral x, y); the GPU's RGBA16UI texel holds them
+// rounded (cpu_oracle/depth_normal.hpp). depth_normal_texels: the texel's four channels (for an
+// upload in RGBA16Uint); depth_normal_values: a texel image (a readback) back to the four values.
+inline ImageD depth_normal_texels(const ImageD& dn) {
+  ImageD out(dn.width, dn.height, 4);
+  for (int y = 0; y < dn.height; ++y)
+    for (int x = 0; x < dn.width; ++x) {
+      const auto t = asvgf::reference::pack_depth_normal(
+          static_cast<float>(dn.at(x, y, 0)), static_cast<float>(dn.at(x, y, 1)),
+          std::array<float, 2>{static_cast<float>(dn.at(x, y, 2)), static_cast<float>(dn.at(x, y, 3))});
+      for (int c = 0; c < 4; ++c) out.at(x, y, c) = t[c];
+    }
+  return out;
+}
+inline ImageD depth_normal_values(const ImageD& texels) {
+  ImageD out(texels.width, texels.height, 4);
+  for (int y = 0; y < texels.height; ++y)
+    for (int x = 0; x < texels.width; ++x) {
+      std::array<std::uint16_t, 4> t{};
+      for (int c = 0; c < 4; ++c) t[c] = static_cast<std::uint16_t>(texels.at(x, y, c));
+      const auto v = asvgf::reference::unpack_depth_normal(t);
+      const double values[4] = {v.z, v.dz, v.oct[0], v.oct[1]};
+      // No hit: all 0, as the references write background (the texel's 0 bits decode another normal).
+      if (v.z != 0.0f || t != std::array<std::uint16_t, 4>{})
+        for (int c = 0; c < 4; ++c) out.at(x, y, c) = values[c];
+    }
+  return out;
+}
+// What the texel keeps of (z, dz, octahedral x, y): test inputs pass through it, so that the
+// references see what the GPU sees.
+inline ImageD depth_normal_as_stored(const ImageD& dn) {
+  return depth_normal_values(depth_normal_texels(dn));
 }
 
 // ---- Packed filter texels (shaders/common/filter_texel.glsl) -----------------------------------
@@ -201,7 +248,7 @@ inline ImageD random_depth_normal(Random& r, int w, int h, double miss = 0.05) {
       dn.at(x, y, 2) = e[0];
       dn.at(x, y, 3) = e[1];
     }
-  return dn;
+  return depth_normal_as_stored(dn);
 }
 
 inline ImageD random_color(Random& r, int w, int h, double lo, double hi, double variance_hi) {

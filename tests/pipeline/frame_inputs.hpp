@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <vector>
 
 #include "asvgf/graph_runtime.hpp"
+#include "cpu_oracle/depth_normal.hpp"
 #include "renderer/render_passes.hpp"
 #include "renderer/scene/scene.hpp"
 #include "renderer/scene_gpu.hpp"
@@ -46,7 +48,7 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
     hal::Format format;
     hal::ImageHandle image;
   };
-  Target targets[] = {{"visibility", hal::Format::RGBA32Uint, {}},   {"depth_normal", hal::Format::RGBA32F, {}},
+  Target targets[] = {{"visibility", hal::Format::RGBA32Uint, {}},   {"depth_normal", hal::Format::RGBA16Uint, {}},
                       {"motion", hal::Format::RGBA16F, {}},          {"albedo", hal::Format::RGBA16F, {}},
                       {"illumination", hal::Format::RGBA16F, {}},    {"specular", hal::Format::RGBA32F, {}},
                       {"specular_albedo", hal::Format::RGBA16F, {}}, {"specular_motion", hal::Format::RGBA32F, {}}};
@@ -87,7 +89,16 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
     device.read_image(targets[target].image, std::as_writable_bytes(std::span(values)));
   };
   read(0, out.visibility);
-  read(1, out.depth_normal);
+  {  // the 8-byte texel (shaders/common/depth_normal.glsl) as (z, dz, octahedral x, y)
+    std::vector<std::uint16_t> texels;
+    read(1, texels);
+    out.depth_normal.resize(n);
+    for (std::size_t i = 0; i < n; i += 4) {
+      const auto v = asvgf::reference::unpack_depth_normal({texels[i], texels[i + 1], texels[i + 2], texels[i + 3]});
+      out.depth_normal[i] = v.z, out.depth_normal[i + 1] = v.dz;
+      out.depth_normal[i + 2] = v.oct[0], out.depth_normal[i + 3] = v.oct[1];
+    }
+  }
   auto read_halves = [&](int target, std::vector<float>& values) {
     std::vector<std::uint16_t> halves;
     read(target, halves);

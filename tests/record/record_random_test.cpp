@@ -41,9 +41,11 @@ struct Step {
 std::vector<Access> accesses(const Step& s) {
   switch (s.kind) {
     case Step::Kind::CopyDispatch:
-    case Step::Kind::ImageDispatch: return {{s.a, false, State::ShaderRead}, {s.b, true, State::ShaderWrite}};
+    case Step::Kind::ImageDispatch:
+      return {{s.a, false, State::ShaderRead}, {s.b, true, State::ShaderWrite}};
     case Step::Kind::CopyBuffer:
-    case Step::Kind::CopyImage: return {{s.a, false, State::CopySrc}, {s.b, true, State::CopyDst}};
+    case Step::Kind::CopyImage:
+      return {{s.a, false, State::CopySrc}, {s.b, true, State::CopyDst}};
   }
   return {};
 }
@@ -83,8 +85,10 @@ std::vector<Step> generate(std::uint32_t seed, int length) {
     }
     for (const Access& acc : accesses(cmd)) {
       Sim& s = sim[acc.resource];
-      if (acc.write) s.written = true, s.read = false;
-      else s.read = true;
+      if (acc.write)
+        s.written = true, s.read = false;
+      else
+        s.read = true;
     }
     steps.push_back(cmd);
   }
@@ -102,9 +106,9 @@ std::size_t run(const std::vector<Step>& steps, int skip, bool checks = true) {
     resources.push_back(device.create_buffer(
         {"buf" + std::to_string(i), 64, BufferUsage::Storage | BufferUsage::CopySrc | BufferUsage::CopyDst}));
   for (int i = 0; i < kImages; ++i)
-    resources.push_back(device.create_image({"img" + std::to_string(i), 4, 4, Format::RGBA16F,
-                                             ImageUsage::Sampled | ImageUsage::Storage | ImageUsage::CopySrc |
-                                                 ImageUsage::CopyDst}));
+    resources.push_back(
+        device.create_image({"img" + std::to_string(i), 4, 4, Format::RGBA16F,
+                             ImageUsage::Sampled | ImageUsage::Storage | ImageUsage::CopySrc | ImageUsage::CopyDst}));
   std::array<std::byte, 4 * 4 * 8> data{};
   for (int i = 0; i < kBuffers; ++i) device.upload_buffer(BufferHandle{resources[i].id}, 0, std::span(data).first(64));
   for (int i = 0; i < kImages; ++i) device.upload_image(ImageHandle{resources[kBuffers + i].id}, data);
@@ -129,8 +133,12 @@ std::size_t run(const std::vector<Step>& steps, int skip, bool checks = true) {
           cmd->dispatch(
               {filter, device.create_binding_set({"set", filter, {{"src_image", a}, {"dst_image", b}}}), params});
           break;
-        case Step::Kind::CopyBuffer: cmd->copy_buffer({BufferHandle{a.id}, BufferHandle{b.id}, 0, 0, 64}); break;
-        case Step::Kind::CopyImage: cmd->copy_image(ImageHandle{a.id}, ImageHandle{b.id}); break;
+        case Step::Kind::CopyBuffer:
+          cmd->copy_buffer({BufferHandle{a.id}, BufferHandle{b.id}, 0, 0, 64});
+          break;
+        case Step::Kind::CopyImage:
+          cmd->copy_image(ImageHandle{a.id}, ImageHandle{b.id});
+          break;
       }
     }
     cmd->end_label();
@@ -142,7 +150,7 @@ std::size_t run(const std::vector<Step>& steps, int skip, bool checks = true) {
 
 }  // namespace
 
-TEST_CASE("random programs with reference-rule barriers never report; removing any one barrier always reports") {
+TEST_CASE("random programs with reference-rule barriers never report, removing any one barrier always reports") {
   int programs = 0, removals = 0;
   for (std::uint32_t seed = 1; seed <= 60; ++seed) {
     CAPTURE(seed);

@@ -138,7 +138,7 @@ TEST_CASE("denoiser settings: every checked setting has a range, and every range
     CHECK_MESSAGE(names.count(member) == 1, member << " has no range");
 }
 
-TEST_CASE("luminance_sigma: a set sigma_l wins; 0 gives 4 up to 256x256, 12 from 768x768, between them with the size") {
+TEST_CASE("luminance_sigma: a set sigma_l wins, 0 gives 4 up to 256x256, 12 from 768x768, between them with the size") {
   DenoiseSettings s;
   REQUIRE(s.sigma_l == 0.0f);  // the default is the size's
   CHECK(luminance_sigma(s, 1, 1) == 4.0f);

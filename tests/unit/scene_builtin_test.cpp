@@ -173,7 +173,7 @@ TEST_CASE("builtin scenes: every scene validates for every animation, and each a
   }
 }
 
-TEST_CASE("builtin glossy: a metal floor and a glossy dielectric tall box; the short box stays diffuse") {
+TEST_CASE("builtin glossy: a metal floor and a glossy dielectric tall box, the short box stays diffuse") {
   const Scene s = builtin_scene("glossy", "static");
   auto material_of = [&](std::size_t instance, std::size_t triangle = 0) {
     return s.materials[s.meshes[s.instances[instance].mesh].materials[triangle]];

@@ -20,7 +20,7 @@ Object.assign(globalThis, globals);
 const FORMATS = {
   r8: ['r8unorm', 1], rgba8: ['rgba8unorm', 4], r16f: ['r16float', 2], rg16f: ['rg16float', 4],
   rgba16f: ['rgba16float', 8], r32f: ['r32float', 4], rg32f: ['rg32float', 8], rgba32f: ['rgba32float', 16],
-  r32ui: ['r32uint', 4], rg32ui: ['rg32uint', 8], rgba32ui: ['rgba32uint', 16],
+  r32ui: ['r32uint', 4], rg32ui: ['rg32uint', 8], rgba32ui: ['rgba32uint', 16], rgba16ui: ['rgba16uint', 8],
 };
 
 const gpu = create([]);
@@ -61,12 +61,13 @@ function half(f) {  // float -> fp16 bits, round to nearest even
 function texel(format, value) {
   const [, size] = FORMATS[format];
   const out = Buffer.alloc(size);
-  const channels = { r8: 1, rgba8: 4, r16f: 1, rg16f: 2, rgba16f: 4, r32f: 1, rg32f: 2, rgba32f: 4, r32ui: 1, rg32ui: 2, rgba32ui: 4 }[format];
+  const channels = { r8: 1, rgba8: 4, r16f: 1, rg16f: 2, rgba16f: 4, r32f: 1, rg32f: 2, rgba32f: 4, r32ui: 1, rg32ui: 2, rgba32ui: 4, rgba16ui: 4 }[format];
   for (let c = 0; c < channels; ++c) {
     const v = value[c];
     if (format.endsWith('8')) out.writeUInt8(Math.round(Math.min(1, Math.max(0, v)) * 255), c);
     else if (format.endsWith('16f')) out.writeUInt16LE(half(v), 2 * c);
     else if (format.endsWith('32f')) out.writeFloatLE(v, 4 * c);
+    else if (format === 'rgba16ui') out.writeUInt16LE(Math.min(65535, Math.max(0, v)) >>> 0, 2 * c);
     else out.writeUInt32LE(v >>> 0, 4 * c);
   }
   return out;

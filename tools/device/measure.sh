@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The measurements issues 36, 37 and 39 need on the H200, in one device call (prepare.sh first):
 #   bash tools/device/measure.sh [bench] [glossy] [static] [light-exit] [orbit] [sigma] [local-mean] [local-mean-report]
-#                                [gl-composite] [vk-occupancy]
+#                                [gl-composite] [vk-occupancy] [ab]
 # (no step: bench glossy static). Each step has a time limit and its results go to
 # $OUT/reports.tgz as soon as it ends, so that a run cut short still returns what it measured.
 #   bench       asvgf bench at 1080p: Vulkan (ASVGF_VK_PIPELINE_STATS), OpenGL (ASVGF_GL_PROGRAM_DUMP), ES
@@ -16,7 +16,11 @@
 #   local-mean-report  the built correction (--local-mean 17, 33, 65; 33 with tap -1) in
 #               `asvgf report` on light-exit and orbit (flicker, lag, energy), and its passes' time
 #   gl-composite  OpenGL's last a-trous iteration with the composite's stores or its pow edited out
-#   vk-occupancy  Vulkan's path tracer at 8 and 4 workgroups a SM (tools/device/occupancy_probe.sh first)
+#   vk-occupancy  Vulkan's path tracer with do-nothing shared memory (tools/device/occupancy_probe.sh
+#               first; every .devbin/asvgf_vkpad<WORDS> it built)
+#   ab          this build against another (.devbin/asvgf_base: `cp` a stripped binary of the commit
+#               before there): the bench twice each, alternately, then the issue-36 quality check,
+#               `asvgf report` at 1080p on light-exit (24 frames, asvgf) with each
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 if command -v nvidia-smi >/dev/null; then  # the device's image has no Vulkan/GL loader; never here
@@ -158,6 +162,20 @@ EOF_PY
           echo "-- $bin round $round"; timeout 60 $bin bench "${BENCH[@]}" 2>&1 | grep -E "^(pathtrace|frame) "
         done
       done | tee $R/vk-occupancy.txt ;;
+    ab)
+      B=./.devbin/asvgf_base
+      [ -x $B ] || { echo "measure.sh ab: $B missing" >&2; exit 2; }
+      for round in 1 2; do
+        for bin in $B $A; do
+          echo "-- $bin round $round"; timeout 60 $bin bench "${BENCH[@]}" 2>&1 | grep -E "^(gbuffer|gradient|temporal|atrous|denoiser|frame) "
+        done
+      done | tee $R/ab-bench.txt
+      save
+      for bin in $B $A; do
+        timeout 200 $bin report "${HD[@]}" --methods asvgf --out $R/ab-$(basename $bin) --quiet 2>&1 | tail -1
+        grep -h "^| \`asvgf\`" $R/ab-$(basename $bin)/report.md | head -1
+        save
+      done ;;
     *) echo "measure.sh: unknown step '$step'" >&2; exit 2 ;;
   esac
   save

@@ -16,11 +16,11 @@ namespace hal {
 
 // ---- Handles --------------------------------------------------------------------------------
 // id 0 is never a valid object, so a default-constructed handle is "none".
-#define HAL_DEFINE_HANDLE(Name)                                              \
-  struct Name {                                                              \
-    std::uint32_t id = 0;                                                    \
-    explicit operator bool() const { return id != 0; }                       \
-    friend bool operator==(Name, Name) = default;                            \
+#define HAL_DEFINE_HANDLE(Name)                        \
+  struct Name {                                        \
+    std::uint32_t id = 0;                              \
+    explicit operator bool() const { return id != 0; } \
+    friend bool operator==(Name, Name) = default;      \
   }
 HAL_DEFINE_HANDLE(BufferHandle);
 HAL_DEFINE_HANDLE(ImageHandle);
@@ -58,10 +58,11 @@ enum class Format : std::uint8_t {
   R32Uint,
   RG32Uint,
   RGBA32Uint,
+  RGBA16Uint,
 };
-inline constexpr std::array kAllFormats = {Format::R8Unorm, Format::RGBA8Unorm, Format::R16F,   Format::RG16F,
-                                           Format::RGBA16F, Format::R32F,       Format::RG32F,  Format::RGBA32F,
-                                           Format::R32Uint, Format::RG32Uint,   Format::RGBA32Uint};
+inline constexpr std::array kAllFormats = {Format::R8Unorm, Format::RGBA8Unorm, Format::R16F,       Format::RG16F,
+                                           Format::RGBA16F, Format::R32F,       Format::RG32F,      Format::RGBA32F,
+                                           Format::R32Uint, Format::RG32Uint,   Format::RGBA32Uint, Format::RGBA16Uint};
 
 // Bytes per texel; 0 for Undefined.
 std::uint32_t format_size(Format format);
@@ -69,6 +70,8 @@ std::uint32_t format_size(Format format);
 std::uint32_t format_channels(Format format);
 // GLSL image format qualifier ("rgba16f", ...), as written in shaders and their reflection.
 std::string_view format_name(Format format);
+// Unsigned integer texels (r32ui, rg32ui, rgba32ui, rgba16ui): cleared and read as integers.
+bool format_is_uint(Format format);
 // Inverse of format_name; Format::Undefined when the name is unknown.
 Format format_from_name(std::string_view name);
 
@@ -169,7 +172,7 @@ struct BlasDesc {
 struct TlasInstance {
   AccelHandle blas;
   std::array<float, 12> transform{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};  // row-major 3x4, object->world
-  std::uint32_t custom_index = 0;                                        // gl_InstanceCustomIndex, 24 bits
+  std::uint32_t custom_index = 0;                                       // gl_InstanceCustomIndex, 24 bits
   std::uint8_t mask = 0xff;
 };
 

@@ -155,7 +155,7 @@ void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, cons
   const ResourceId display =
       out.display ? import("display", *out.display, w, h) : g.add_image("display", w, h, F::RGBA8Unorm);
   const ResourceId counters = impl_->counters.import(g);
-  const ResourceId depth_normal = g.add_image("depth_normal", w, h, F::RGBA32F, graph::Lifetime::Persistent);
+  const ResourceId depth_normal = g.add_image("depth_normal", w, h, F::RGBA16Uint, graph::Lifetime::Persistent);
   passes::add_pack_surface(g, impl_->pipelines, {depth, normal, depth_normal}, impl_->config.depth_gradient_given);
 
   // The caller's conventions as the denoiser's, where they differ (radiance in, other motion).

@@ -25,7 +25,7 @@ struct AtrousResources {
   // the variance itself: its color_in is the temporal pass's output (rgb, temporal variance) and it
   // also reads `estimate` (the variance pass's other inputs).
   graph::ResourceId color_in = 0;                  // read
-  graph::ResourceId depth_normal = 0;              // read (not by packed-in iterations): RGBA32F
+  graph::ResourceId depth_normal = 0;              // read (not by packed-in iterations): RGBA16UI
   graph::ResourceId color_out = 0;                 // written (not with `composite`)
   std::optional<graph::ResourceId> color_history;  // also written (persistent RGBA16F) at the history tap
   std::string prefix;                              // of the pass name: "specular." for the second signal

@@ -139,7 +139,8 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
     }
     // Several iterations read depth_normal's strata centres from an image of their own.
     const std::optional<ResourceId> strata_guide =
-        s.gradient_iterations > 1 ? std::optional(graph.add_image("gradient_guide", gw, gh, F::RGBA32F)) : std::nullopt;
+        s.gradient_iterations > 1 ? std::optional(graph.add_image("gradient_guide", gw, gh, F::RGBA16Uint))
+                                  : std::nullopt;
     for (int i = 0; i < s.gradient_iterations; ++i) {
       const ResourceId next = graph.add_image("gradient." + std::to_string(i + 1), gw, gh, F::RGBA16F);
       add_gradient_atrous(

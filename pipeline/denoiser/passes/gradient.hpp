@@ -25,7 +25,7 @@ graph::PassBuilder add_gradient(graph::RenderGraph& graph, PipelineCache& pipeli
 struct ReprojectedGradientResources {
   graph::ResourceId illumination = 0;  // read: w x h, this frame's demodulated samples
   graph::ResourceId motion = 0;        // read: previous minus current pixel position
-  graph::ResourceId depth_normal = 0;  // read, and its history read: persistent RGBA32F
+  graph::ResourceId depth_normal = 0;  // read, and its history read: persistent RGBA16UI
   graph::ResourceId luminance = 0;     // written, and its history read: persistent w x h R32F
   graph::ResourceId gradient = 0;      // written: ceil(w/3) x ceil(h/3) RGBA16F (delta, Delta, 0, 0)
 };

@@ -12,9 +12,9 @@ namespace asvgf::passes {
 
 struct GradientAtrousResources {
   graph::ResourceId gradient_in = 0;   // read: 1/3 res RGBA16F (delta, Delta)
-  graph::ResourceId depth_normal = 0;  // read unless strata_guide_in is given: full-res guide (RGBA32F)
+  graph::ResourceId depth_normal = 0;  // read unless strata_guide_in is given: full-res guide (RGBA16UI)
   graph::ResourceId gradient_out = 0;  // written: 1/3 res RGBA16F
-  // 1/3 res RGBA32F: depth_normal's texel at each stratum's centre pixel, the only texels an
+  // 1/3 res RGBA16UI: depth_normal's texel at each stratum's centre pixel, the only texels an
   // iteration reads. The first of several iterations writes it; the others read it instead of
   // depth_normal.
   std::optional<graph::ResourceId> strata_guide_out;

@@ -11,7 +11,7 @@ namespace asvgf::passes {
 struct PackSurfaceResources {
   graph::ResourceId depth = 0;         // read: x linear view depth, y its gradient when `depth_gradient_given`
   graph::ResourceId normal = 0;        // read: xyz world-space normal (any length)
-  graph::ResourceId depth_normal = 0;  // written: RGBA32F (z, dz, octahedral normal), 0 on background
+  graph::ResourceId depth_normal = 0;  // written: RGBA16UI (shaders/common/depth_normal.glsl), 0 on background
 };
 // Adds "pack_surface".
 graph::PassBuilder add_pack_surface(graph::RenderGraph& graph, PipelineCache& pipelines, const PackSurfaceResources& r,

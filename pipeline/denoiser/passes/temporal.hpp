@@ -16,7 +16,7 @@ namespace asvgf::passes {
 struct TemporalResources {
   graph::ResourceId illumination = 0;         // read: RGBA32F demodulated samples of this frame
   graph::ResourceId motion = 0;               // read: RG32F, previous minus current pixel position
-  graph::ResourceId depth_normal = 0;         // read, and its history read: persistent RGBA32F
+  graph::ResourceId depth_normal = 0;         // read, and its history read: persistent RGBA16UI
   graph::ResourceId color_history = 0;        // its history read: persistent RGBA16F (rgb, variance)
   graph::ResourceId moments = 0;              // history read and written: persistent RGBA16F (E[l], sqrt(Var[l]), n, 0)
   graph::ResourceId integrated = 0;           // written: RGBA16F (rgb, temporal variance); may be color_history

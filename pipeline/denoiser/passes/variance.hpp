@@ -13,7 +13,7 @@ namespace asvgf::passes {
 struct VarianceResources {
   graph::ResourceId integrated = 0;      // read: RGBA16F from the temporal pass
   graph::ResourceId moments = 0;         // read: this frame's RGBA16F moments (E[l], sqrt(Var[l]), n)
-  graph::ResourceId depth_normal = 0;    // read: RGBA32F
+  graph::ResourceId depth_normal = 0;    // read: RGBA16UI
   graph::ResourceId color_variance = 0;  // written: RGBA16F (rgb, variance)
   graph::ResourceId albedo = 0;          // read: what the signal is re-modulated by (the spatial estimate's scale)
   std::string prefix;                    // of the pass name: "specular." for the second signal

@@ -28,6 +28,7 @@ constexpr FormatName kFormats[] = {
     {spv::ImageFormatR32ui, "r32ui", "R32Uint"},
     {spv::ImageFormatRg32ui, "rg32ui", "RG32Uint"},
     {spv::ImageFormatRgba32ui, "rgba32ui", "RGBA32Uint"},
+    {spv::ImageFormatRgba16ui, "rgba16ui", "RGBA16Uint"},
 };
 
 // A block's GLSL instance name ("src" in `buffer Input {...} src;`), else its block name.
@@ -105,8 +106,7 @@ void mirror_struct(const spirv_cross::Compiler& c, std::uint32_t type_id, const 
   if (s.name.empty()) s.name = "Struct" + std::to_string(type_id);
   std::uint32_t at = 0;
   auto pad_to = [&](std::uint32_t offset) {
-    if (offset > at)
-      s.members.push_back({"pad" + std::to_string(at), "std::uint8_t", at, offset - at, true});
+    if (offset > at) s.members.push_back({"pad" + std::to_string(at), "std::uint8_t", at, offset - at, true});
     at = offset;
   };
   for (std::uint32_t m = 0; m < type.member_types.size(); ++m) {
@@ -131,10 +131,17 @@ void mirror_struct(const spirv_cross::Compiler& c, std::uint32_t type_id, const 
     } else {
       switch (member.basetype) {
         case spirv_cross::SPIRType::UInt:
-        case spirv_cross::SPIRType::Boolean: cpp = "std::uint32_t"; break;
-        case spirv_cross::SPIRType::Int: cpp = "std::int32_t"; break;
-        case spirv_cross::SPIRType::Float: cpp = "float"; break;
-        default: fail("has a type other than uint, int, bool or float");
+        case spirv_cross::SPIRType::Boolean:
+          cpp = "std::uint32_t";
+          break;
+        case spirv_cross::SPIRType::Int:
+          cpp = "std::int32_t";
+          break;
+        case spirv_cross::SPIRType::Float:
+          cpp = "float";
+          break;
+        default:
+          fail("has a type other than uint, int, bool or float");
       }
       if (member.columns > 1) fail("is a matrix");
       if (member.vecsize > 1) cpp = "std::array<" + cpp + ", " + std::to_string(member.vecsize) + ">";
@@ -201,8 +208,7 @@ Reflection reflect(const std::vector<std::uint32_t>& spirv, const std::string& s
     std::uint32_t next_unit[5] = {};  // per Kind
     for (auto& b : out.bindings) b.gl_binding = next_unit[static_cast<int>(b.kind)]++;
 
-    for (const auto& sc : c.get_specialization_constants())
-      out.specialization_constants.push_back(c.get_name(sc.id));
+    for (const auto& sc : c.get_specialization_constants()) out.specialization_constants.push_back(c.get_name(sc.id));
 
     const auto& caps = c.get_declared_capabilities();
     out.uses_ray_query = std::find(caps.begin(), caps.end(), spv::CapabilityRayQueryKHR) != caps.end();
