@@ -14,9 +14,8 @@
 // (a one-signal chain's last, packed-in iteration) composites the result (common/composite.glsl),
 // unrounded, instead of writing it to an RGBA16F image for the composite pass: 16 bytes a pixel and
 // a dispatch fewer.
-// The packed texel has no room for the depth gradient, which only the centre needs: the first
-// iteration copies it from depth_normal into an R32F image and the packed-in iterations read that
-// (4 bytes a pixel instead of depth_normal's 8).
+// The packed texel carries the centre's depth gradient in 8 bits (common/filter_texel.glsl), so the
+// packed-in iterations read nothing but the texels.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -59,9 +58,7 @@ layout(set = 0, binding = 6) uniform texture2D moments;     // E[l], sqrt(Var[l]
 #else
 layout(set = 0, binding = 1) uniform texture2D color_in;  // rgb colour, a variance
 #endif
-#ifdef PACKED_IN
-layout(set = 0, binding = 2) uniform texture2D depth_gradient;
-#else
+#ifndef PACKED_IN
 layout(set = 0, binding = 2) uniform utexture2D depth_normal;
 #endif
 #ifdef PACKED_OUT
@@ -85,7 +82,6 @@ layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D color_out;
 layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_history;
 #endif
 #ifdef FIRST_PACKED
-layout(set = 0, binding = 5, r32f) writeonly uniform image2D depth_gradient_out;
 layout(set = 0, binding = 7) uniform texture2D albedo;  // the variance estimate's (COMPOSITE's binding)
 #include "common/variance_estimate.glsl"
 #endif
@@ -152,11 +148,11 @@ float prefiltered_variance(ivec2 p) {
 }
 
 void filter_pixel(ivec2 p) {
-  // The centre's depth gradient is only in depth_normal; its colour, depth and normal come from
-  // where the taps' do, so that a tap on the centre's own surface weighs exactly as much.
+  // The centre's colour, depth and normal come from where the taps' do, so that a tap on the
+  // centre's own surface weighs exactly as much.
   const Tap c = read_tap(p);
 #ifdef PACKED_IN
-  const float dz = texelFetch(depth_gradient, p, 0).x;
+  const float dz = filter_texel_gradient(texel_at(p));
 #else
   const float dz = depth_normal_gradient(texelFetch(depth_normal, p, 0));
 #endif
@@ -192,10 +188,7 @@ void filter_pixel(ivec2 p) {
   result = clamp_fp16(result);
   const vec4 stored = round_to_half_clamped(result);  // what every fp16 output below holds (common/color.glsl)
 #ifdef PACKED_OUT
-  color_out.texels[p.y * int(params.width) + p.x] = pack_filter_texel(result, center.z, center.n);
-#ifdef FIRST_PACKED
-  imageStore(depth_gradient_out, p, vec4(dz, 0.0, 0.0, 0.0));
-#endif
+  color_out.texels[p.y * int(params.width) + p.x] = pack_filter_texel(result, center.z, dz, center.n);
 #elif defined(COMPOSITE)
   composite_pixel(p, result.rgb);
 #else

@@ -197,12 +197,12 @@ inline ImageD depth_normal_as_stored(const ImageD& dn) {
 
 // ---- Packed filter texels (shaders/common/filter_texel.glsl) -----------------------------------
 // A read-back buffer of packed filter texels (4 words a pixel) as the reference's inputs: colour
-// and variance (the halves, exactly), and depth_normal with the packed depth and normal (octahedral
-// again, in double) and the depth gradient taken from `depth_normal`, which the texel does not carry.
+// and variance (the halves, exactly), and depth_normal with the packed depth, normal (octahedral
+// again, in double) and depth gradient (dz / z's 8-bit code times the depth, in float as the GPU).
 struct FilterTexels {
   ImageD color, depth_normal;
 };
-inline FilterTexels unpack_filter_texels(const ImageD& packed, const ImageD& depth_normal) {
+inline FilterTexels unpack_filter_texels(const ImageD& packed) {
   FilterTexels out{ImageD(packed.width, packed.height, 4), ImageD(packed.width, packed.height, 4)};
   for (int y = 0; y < packed.height; ++y)
     for (int x = 0; x < packed.width; ++x) {
@@ -212,11 +212,13 @@ inline FilterTexels unpack_filter_texels(const ImageD& packed, const ImageD& dep
                                      half_to_float(static_cast<std::uint16_t>(u >> 16))};
       };
       const auto rg = halves(word(0)), ba = halves(word(1)), nxy = halves(word(3));
-      const float signed_z = std::bit_cast<float>(word(2));
+      const bool z_negative = (word(2) & 0x80000000u) != 0;
+      const float z = std::abs(std::bit_cast<float>(word(2) & 0xffffff00u));
+      const std::uint32_t code = word(2) & 0xffu;
+      const float r = code == 0 ? 0.0f : std::bit_cast<float>((code + ((127u - 20u) << 3)) << 20);
       const double nz = std::sqrt(std::max(1.0 - nxy[0] * nxy[0] - nxy[1] * nxy[1], 0.0));
-      const auto oct = asvgf::reference::oct_encode<double>({nxy[0], nxy[1], signed_z < 0.0f ? -nz : nz});
-      const double values[2][4] = {{rg[0], rg[1], ba[0], ba[1]},
-                                   {std::abs(signed_z), depth_normal.at(x, y, 1), oct[0], oct[1]}};
+      const auto oct = asvgf::reference::oct_encode<double>({nxy[0], nxy[1], z_negative ? -nz : nz});
+      const double values[2][4] = {{rg[0], rg[1], ba[0], ba[1]}, {z, z * r, oct[0], oct[1]}};
       for (int c = 0; c < 4; ++c) out.color.at(x, y, c) = values[0][c], out.depth_normal.at(x, y, c) = values[1][c];
     }
   return out;

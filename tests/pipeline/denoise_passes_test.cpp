@@ -608,14 +608,14 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
 }
 
 // Between the first and the last iteration the chain passes packed filter texels (a storage buffer
-// of 4 words a pixel: colour and variance as halves, depth, normal x, y as halves). Each iteration
+// of 4 words a pixel: colour and variance as halves, depth and its gradient, normal x, y as halves). Each iteration
 // is checked against the reference run on what the previous one wrote (read back and unpacked
 // exactly; the first estimates the variance and reads its taps from a shared-memory tile), so the
 // tolerance stays one fp16
 // store; the packing itself is checked on its own, for normals along every axis and near z = 0.
 TEST_CASE(
-    "denoise passes: atrous iterations on packed filter texels match the CPU reference, and the packing keeps depth "
-    "and normal") {
+    "denoise passes: atrous iterations on packed filter texels match the CPU reference, and the packing keeps depth, "
+    "normal and depth gradient") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   passes::SanitizeCounters counters(*device);
@@ -639,6 +639,11 @@ TEST_CASE(
         const auto oct = asvgf::reference::oct_encode<double>(kNormals[static_cast<std::size_t>(x + 3 * y) % 7]);
         dn.at(x, y, 2) = oct[0], dn.at(x, y, 3) = oct[1];
       }
+    // Depth gradients at and past the ends of the packed gradient's range: 0, dz / z below 2^-20,
+    // at its smallest and largest codes, and beyond (saturates).
+    const std::array<double, 6> kRelativeGradients{0.0, 0x1p-21, 0x1p-20 * 1.125, 3840.0, 1e6, 0x1p-3 * 1.0625};
+    for (int x = 0; x < static_cast<int>(kRelativeGradients.size()) && x < w; ++x)
+      if (dn.at(x, 1, 0) > 0) dn.at(x, 1, 1) = static_cast<float>(dn.at(x, 1, 0) * kRelativeGradients[std::size_t(x)]);
     dn = depth_normal_as_stored(dn);  // what the texel keeps of them
     const ImageD color = random_color(r, w, h, 0, 4, 0.5);
     const ImageD moments = random_moments(r, w, h);
@@ -653,33 +658,29 @@ TEST_CASE(
     // A history tap on the first and on a middle iteration (both variants; a chain has one).
     const auto history_first = g.add_image("color_history.1", uw, uh, F::RGBA16F, Lifetime::Persistent);
     const auto history = g.add_image("color_history.2", uw, uh, F::RGBA16F, Lifetime::Persistent);
-    const auto depth_gradient = g.add_image("depth_gradient", uw, uh, F::R32F);
     const ImageD estimate_albedo = random_color(r, w, h, 0.05, 1, 1);
     passes::add_atrous(
         g, pipelines,
-        {harness.input(g, "integrated", color, F::RGBA16F), dn_in, first, history_first, "", depth_gradient,
+        {harness.input(g, "integrated", color, F::RGBA16F), dn_in, first, history_first, "",
          passes::VarianceEstimateInputs{harness.input(g, "moments", moments, F::RGBA16F),
                                         harness.input(g, "estimate_albedo", estimate_albedo, F::RGBA16F)}},
         0, settings);
-    passes::add_atrous(g, pipelines, {first, dn_in, middle, history, "", depth_gradient}, 1, settings);
-    passes::add_atrous(g, pipelines, {middle, dn_in, last, std::nullopt, "", depth_gradient}, 2, settings);
+    passes::add_atrous(g, pipelines, {first, dn_in, middle, history, ""}, 1, settings);
+    passes::add_atrous(g, pipelines, {middle, dn_in, last, std::nullopt, ""}, 2, settings);
     // The same last iteration compositing itself, with a history tap on every other size.
     const ImageD albedo = random_color(r, w, h, 0, 1, 1);
     const auto hdr = g.add_image("hdr", uw, uh, F::RGBA32F), display = g.add_image("display", uw, uh, F::RGBA8Unorm);
     const bool composite_tap = w % 2 == 1;
     const auto history_last = g.add_image("color_history.3", uw, uh, F::RGBA16F, Lifetime::Persistent);
-    passes::add_atrous(
-        g, pipelines,
-        {middle, dn_in, 0, composite_tap ? std::optional(history_last) : std::nullopt, "", depth_gradient, std::nullopt,
-         passes::CompositeResources{0, harness.input(g, "albedo", albedo, F::RGBA16F), hdr, display,
-                                    counters.import(g)}},
-        2, settings);
-    ImageD got_first, got_middle, got_last, got_history_first, got_history, got_depth_gradient, got_hdr, got_display,
-        got_history_last;
+    passes::add_atrous(g, pipelines,
+                       {middle, dn_in, 0, composite_tap ? std::optional(history_last) : std::nullopt, "", std::nullopt,
+                        passes::CompositeResources{0, harness.input(g, "albedo", albedo, F::RGBA16F), hdr, display,
+                                                   counters.import(g)}},
+                       2, settings);
+    ImageD got_first, got_middle, got_last, got_history_first, got_history, got_hdr, got_display, got_history_last;
     harness.readback(g, hdr, &got_hdr);
     harness.readback(g, display, &got_display);
     if (composite_tap) harness.readback(g, history_last, &got_history_last);
-    harness.readback(g, depth_gradient, &got_depth_gradient);
     harness.readback_buffer(g, first, w, h, 4, &got_first);
     harness.readback_buffer(g, middle, w, h, 4, &got_middle);
     harness.readback(g, last, &got_last);
@@ -687,7 +688,7 @@ TEST_CASE(
     harness.readback(g, history, &got_history);
     harness.run(g);
     const ImageD dn_q = quantize(dn, F::RGBA32F);
-    const FilterTexels t1 = unpack_filter_texels(got_first, dn_q), t2 = unpack_filter_texels(got_middle, dn_q);
+    const FilterTexels t1 = unpack_filter_texels(got_first), t2 = unpack_filter_texels(got_middle);
     const auto params = [&](int iteration) {
       return ref::AtrousParams{1 << iteration, 0, settings.sigma_z, settings.sigma_n,
                                asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height))};
@@ -744,62 +745,57 @@ TEST_CASE(
         if (!depth_kept || !normal_kept) ++packing_errors;
       }
     CHECK(packing_errors == 0);
-    // The centre's depth gradient, which the packed iterations read from its own image, to the bit.
+    // The centre's depth gradient, 8 bits of the packed depth word: dz / z within 1/16 of itself
+    // (common/filter_texel.glsl), 0 below 2^-20 (rounded), 3840 above; passed on unchanged.
     int gradient_errors = 0;
     for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) gradient_errors += got_depth_gradient.at(x, y, 0) != dn_q.at(x, y, 1);
+      for (int x = 0; x < w; ++x) {
+        const double z = dn_q.at(x, y, 0), want_r = z > 0 ? dn_q.at(x, y, 1) / z : 0.0;
+        const double got = z > 0 ? t1.depth_normal.at(x, y, 1) / z : t1.depth_normal.at(x, y, 1);
+        const bool kept = want_r < 0x1p-20 * 1.0625
+                              ? got == 0.0  // rounds to the smallest code's value: 0
+                              : std::abs(got - std::min(want_r, 3840.0)) <= std::min(want_r, 3840.0) / 16;
+        gradient_errors += !kept || t2.depth_normal.at(x, y, 1) != t1.depth_normal.at(x, y, 1);
+      }
     CHECK(gradient_errors == 0);
   }
   // The shared-memory tile that writes the first packed texels assumes step 1.
   RenderGraph g;
   const auto img = g.add_image("color_in", 8, 8, F::RGBA16F), dn = g.add_image("depth_normal", 8, 8, F::RGBA16Uint);
-  const auto dz = g.add_image("depth_gradient", 8, 8, F::R32F);
   const auto alb = g.add_image("albedo", 8, 8, F::RGBA16F);
   const passes::VarianceEstimateInputs mom{g.add_image("moments", 8, 8, F::RGBA16F), alb};
   const auto packed = [&](const char* name, std::uint64_t bytes) { return g.add_buffer(name, bytes); };
   CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines, {img, dn, packed("out", 8 * 8 * 16), std::nullopt, "", dz, mom}, 1, settings),
-      std::invalid_argument);
-  // Packed texels carry no depth gradient: without its image, the next iteration would have none.
-  CHECK_THROWS_AS(
-      passes::add_atrous(
-          g, pipelines, {img, dn, packed("no_gradient", 8 * 8 * 16), std::nullopt, "", std::nullopt, mom}, 0, settings),
+      passes::add_atrous(g, pipelines, {img, dn, packed("out", 8 * 8 * 16), std::nullopt, "", mom}, 1, settings),
       std::invalid_argument);
   // The first packed iteration estimates the variance from the moments and albedo; no other reads them.
   CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines, {img, dn, packed("no_moments", 8 * 8 * 16), std::nullopt, "", dz}, 0, settings),
+      passes::add_atrous(g, pipelines, {img, dn, packed("no_moments", 8 * 8 * 16), std::nullopt, ""}, 0, settings),
       std::invalid_argument);
   CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines,
-                         {img, dn, g.add_image("image_out", 8, 8, F::RGBA16F), std::nullopt, "", std::nullopt, mom}, 0,
+      passes::add_atrous(g, pipelines, {img, dn, g.add_image("image_out", 8, 8, F::RGBA16F), std::nullopt, "", mom}, 0,
                          settings),
       std::invalid_argument);
   // A buffer or image that does not cover depth_normal would be read or written out of range.
   CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines, {img, dn, packed("small", 8 * 8 * 16 - 16), std::nullopt, "", dz, mom}, 0,
-                         settings),
+      passes::add_atrous(g, pipelines, {img, dn, packed("small", 8 * 8 * 16 - 16), std::nullopt, "", mom}, 0, settings),
       std::invalid_argument);
   CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_image("wide", 9, 8, F::RGBA16F)}, 0, settings),
                   std::invalid_argument);
-  CHECK_THROWS_AS(passes::add_atrous(g, pipelines,
-                                     {img, dn, packed("narrow_gradient", 8 * 8 * 16), std::nullopt, "",
-                                      g.add_image("depth_gradient.small", 8, 7, F::R32F), mom},
-                                     0, settings),
-                  std::invalid_argument);
   CHECK_THROWS_AS(
       passes::add_atrous(g, pipelines,
-                         {img, dn, packed("narrow_moments", 8 * 8 * 16), std::nullopt, "", dz,
+                         {img, dn, packed("narrow_moments", 8 * 8 * 16), std::nullopt, "",
                           passes::VarianceEstimateInputs{g.add_image("moments.small", 7, 8, F::RGBA16F), alb}},
                          0, settings),
       std::invalid_argument);
   CHECK_THROWS_AS(
       passes::add_atrous(g, pipelines,
-                         {img, dn, packed("narrow_albedo", 8 * 8 * 16), std::nullopt, "", dz,
+                         {img, dn, packed("narrow_albedo", 8 * 8 * 16), std::nullopt, "",
                           passes::VarianceEstimateInputs{mom.moments, g.add_image("albedo.small", 8, 7, F::RGBA16F)}},
                          0, settings),
       std::invalid_argument);
   CHECK_NOTHROW(
-      passes::add_atrous(g, pipelines, {img, dn, packed("fits", 8 * 8 * 16), std::nullopt, "", dz, mom}, 0, settings));
+      passes::add_atrous(g, pipelines, {img, dn, packed("fits", 8 * 8 * 16), std::nullopt, "", mom}, 0, settings));
 }
 
 TEST_CASE(

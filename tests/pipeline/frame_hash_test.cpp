@@ -34,8 +34,8 @@ struct Expected {
 const Expected kExpected[] = {
     {frame::Method::Raw, "raw", 0x9e60626002f2596full},
     {frame::Method::Ema, "ema", 0xa14f6011c2143061ull},
-    {frame::Method::Svgf, "svgf", 0xdf17a17adc310235ull},
-    {frame::Method::Asvgf, "asvgf", 0x83adbc557bc82a64ull},
+    {frame::Method::Svgf, "svgf", 0x5db946742115e956ull},
+    {frame::Method::Asvgf, "asvgf", 0xcb611bb2b3717a4eull},
     {frame::Method::Reference, "reference", 0x3e41802295162b54ull},
 };
 

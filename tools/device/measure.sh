@@ -6,7 +6,7 @@
 # $OUT/reports.tgz as soon as it ends, so that a run cut short still returns what it measured.
 #   bench       asvgf bench at 1080p: Vulkan (ASVGF_VK_PIPELINE_STATS), OpenGL (ASVGF_GL_PROGRAM_DUMP), ES
 #   glossy      report glossy/boxes-move, 12 frames: the specular split's settings (issue 39)
-#   static      report light-exit's still frames, 12: energy bias by sigma_l and history tap
+#   static      report the static animation, 12 frames: energy bias by sigma_l, history tap and --local-mean
 #   light-exit  the headline, 24 frames, K from plain accumulation at 128, 256 and 512 spp (about 4 minutes)
 #   orbit       report glossy/orbit, 12 frames: the split against one signal with a moving camera
 #   sigma       σ_l around the size rule's 12 at 1080p (issue 39): static and light-exit (energy), the
@@ -67,8 +67,9 @@ for step in "${steps[@]}"; do
         --run 'tap-1=asvgf --history-tap -1' --run 'split-t=asvgf --specular-split --history-tap -1' \
         --out $R/glossy-boxes --quiet 2>&1 | tail -3 ;;
     static)
-      timeout 120 $A report "${HD[@]}" --animation static --frames 12 --methods raw --run def=asvgf \
+      timeout 180 $A report "${HD[@]}" --animation static --frames 12 --methods raw --run def=asvgf \
         --run 'tap-1=asvgf --history-tap -1' --run 'sl4=asvgf --sigma-l 4' --run 'sl8=asvgf --sigma-l 8' \
+        --run 'lm33=asvgf --local-mean 33' --run 'lm65=asvgf --local-mean 65' \
         --out $R/static --quiet 2>&1 | tail -3 ;;
     light-exit)
       timeout 300 $A report "${HD[@]}" --max-accumulation-spp 512 --methods accum-128spp,accum-256spp,accum-512spp \

@@ -25,13 +25,10 @@ struct AtrousResources {
   // the variance itself: its color_in is the temporal pass's output (rgb, temporal variance) and it
   // also reads `estimate` (the variance pass's other inputs).
   graph::ResourceId color_in = 0;                  // read
-  graph::ResourceId depth_normal = 0;              // read (not by packed-in iterations): RGBA16UI
+  graph::ResourceId depth_normal = 0;              // read (not by packed-in iterations): RGBA16UI; the size
   graph::ResourceId color_out = 0;                 // written (not with `composite`)
   std::optional<graph::ResourceId> color_history;  // also written (persistent RGBA16F) at the history tap
   std::string prefix;                              // of the pass name: "specular." for the second signal
-  // R32F, depth_normal's depth gradient, which the packed texel has no room for: written by the
-  // first packed iteration, read by every packed-in one instead of depth_normal.
-  std::optional<graph::ResourceId> depth_gradient;
   // Read by the first packed iteration's variance estimate: the moments, RGBA16F (E[l], sqrt(Var[l]), n),
   // and the albedo the signal is re-modulated by (the spatial estimate compares radiance).
   std::optional<VarianceEstimateInputs> estimate;
@@ -44,9 +41,8 @@ struct AtrousResources {
 // Adds "<prefix>atrous.<iteration + 1>" with step 2^iteration and the settings' kernel and sigmas.
 // The dispatch covers depth_normal's size. Throws std::invalid_argument for a buffer out from an
 // image in at an iteration other than 0, for colour images of another size or buffers smaller
-// than 16 bytes a pixel, for a packed iteration without depth_gradient and for the first packed
-// iteration without moments (or moments given to another), and for `composite` on another
-// iteration or with a specular signal.
+// than 16 bytes a pixel, for the first packed iteration without moments (or moments given to another), and for
+// `composite` on another iteration or with a specular signal.
 graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
                               int iteration, const DenoiseSettings& settings);
 
