@@ -71,28 +71,20 @@ std::string shaders_variable() {
   return chosen ? chosen : "";
 }
 
-// Drivers that run our programs faster from SPIR-V than from GLSL, measured (docs/performance.md):
-// NVIDIA's (1080p path tracing 3.94 against 4.68 ms on the H100; the H200's frame 6.6 against 7.5
-// ms, denoiser 0.648 against 0.672, when the path tracer had two stacks). Mesa's llvmpipe
-// runs the OpenGL suites slower from SPIR-V (78 s of CPU against 20); other drivers are unmeasured.
-bool spirv_measured_faster(const std::string& vendor) {
-  return vendor.find("NVIDIA") != std::string::npos;
-}
-
 // Whether programs are loaded as SPIR-V (GL_ARB_gl_spirv) rather than compiled from GLSL, on
-// OpenGL 4.5: ASVGF_GL_SHADERS=glsl or spirv chooses; unset, SPIR-V where the context has the
-// extension and the driver is one spirv_measured_faster names. OpenGL ES has no SPIR-V path: it
-// always compiles ESSL.
-bool spirv_shaders(bool es, const std::string& adapter, const std::string& vendor) {
+// OpenGL 4.5: ASVGF_GL_SHADERS=glsl or spirv chooses; unset, GLSL. No driver is measured faster
+// from SPIR-V now (docs/performance.md): NVIDIA's was (path tracing 3.94 against 4.68 ms on the
+// H100) until the GLSL translation stopped re-reading buffers at each use (3.32 against 3.20 ms
+// since), and Mesa's llvmpipe runs the OpenGL suites slower from SPIR-V (78 s of CPU against 20).
+// OpenGL ES has no SPIR-V path: it always compiles ESSL.
+bool spirv_shaders(bool es, const std::string& adapter) {
   if (const std::string problem = environment_problem(); !problem.empty())
     throw Error(ErrorKind::InvalidUsage, "", problem);
   const std::string choice = shaders_variable();
-  if (es) return false;
-  const bool available = epoxy_has_gl_extension("GL_ARB_gl_spirv");
-  if (choice.empty()) return available && spirv_measured_faster(vendor);
-  if (choice == "spirv" && !available)
+  if (es || choice != "spirv") return false;
+  if (!epoxy_has_gl_extension("GL_ARB_gl_spirv"))
     throw Error(ErrorKind::Unsupported, adapter, "ASVGF_GL_SHADERS=spirv: the context lacks GL_ARB_gl_spirv");
-  return choice == "spirv";
+  return true;
 }
 
 }  // namespace
@@ -109,7 +101,7 @@ GlDevice::GlDevice(const DeviceOptions& options)
   if (es ? version < 31 : version < 45)
     throw Error(ErrorKind::Unsupported, adapter_.name,
                 "the context is " + adapter_.api_version + "; compute needs " + (es ? "OpenGL ES 3.1" : "OpenGL 4.5"));
-  spirv_shaders_ = spirv_shaders(es, adapter_.name, gl_string(GL_VENDOR));
+  spirv_shaders_ = spirv_shaders(es, adapter_.name);
   adapter_.api_version += spirv_shaders_ ? ", programs from SPIR-V (GL_ARB_gl_spirv)"
                           : es           ? ", programs from ESSL"
                                          : ", programs from GLSL";

@@ -2,11 +2,12 @@
 // eq. 1-4; the seed's w_z, w_n, w_l). Taps at p + step * (i, j): a 5x5 B3-spline kernel (paper) or a
 // 3x3 box (seed), chosen by `kernel`. Colour is averaged with h * w; the variance in alpha with
 // (h * w)^2 / (sum h * w)^2. The luminance weight uses the 3x3-binomial-prefiltered variance.
-// Variants: PACKED_IN reads the packed filter texels (common/filter_texel.glsl) the previous
-// iteration wrote to a storage buffer, one per pixel in rows, instead of an RGBA16F colour and
-// depth_normal per tap; PACKED_OUT writes them for the next iteration; a chain's last iteration
-// writes RGBA16F for composite. PACKED_OUT alone (FIRST_PACKED) is a chain's first iteration
-// (step 1): it reads its taps from a shared-memory tile, and estimates each tile texel's colour and
+// Variants: PACKED_IN reads the packed colour texels (common/filter_texel.glsl) the previous
+// iteration wrote to a storage buffer, one per pixel in rows, and the packed surface texels the
+// first wrote to another, instead of an RGBA16F colour and depth_normal per tap; PACKED_OUT writes
+// colour texels for the next iteration; a chain's last iteration writes RGBA16F for composite.
+// PACKED_OUT alone (FIRST_PACKED) is a chain's first iteration (step 1): it also writes the surface
+// texels, reads its taps from a shared-memory tile, and estimates each tile texel's colour and
 // variance from the temporal pass's output, moments and the albedo (common/variance_estimate.glsl), so the
 // variance pass (48 bytes a pixel and a dispatch) does not run. Without PACKED_* (the box kernel,
 // one iteration, images too large for packed texels) the first iteration reads the variance pass's
@@ -14,8 +15,8 @@
 // (a one-signal chain's last, packed-in iteration) composites the result (common/composite.glsl),
 // unrounded, instead of writing it to an RGBA16F image for the composite pass: 16 bytes a pixel and
 // a dispatch fewer.
-// The packed texel carries the centre's depth gradient in 8 bits (common/filter_texel.glsl), so the
-// packed-in iterations read nothing but the texels.
+// The surface texel carries the centre's depth gradient in 8 bits (common/filter_texel.glsl), so the
+// packed-in iterations read nothing but the two texels.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -34,6 +35,11 @@
 const int kGroupX = 16;
 const int kGroupY = 8;
 layout(local_size_x = 16, local_size_y = 8) in;
+#elif defined(PACKED_IN)
+// 16x4: a warp of 32 covers 16x2 pixels, so a tap's row of 8-byte texels is one whole 128-byte line
+// in each buffer; 8x8's 8x4 warps read half lines, twice the requests, which bounded the large steps
+// (docs/performance.md).
+layout(local_size_x = 16, local_size_y = 4) in;
 #else
 layout(local_size_x = 8, local_size_y = 8) in;
 #endif
@@ -51,7 +57,8 @@ layout(set = 0, binding = 0) uniform Params {
   uint tonemap;       // COMPOSITE: 0 clamp, 1 ACES (Narkowicz)
 } params;
 #ifdef PACKED_IN
-layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec4 texels[]; } color_in;
+layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec2 texels[]; } color_in;
+layout(set = 0, binding = 5, std430) readonly buffer SurfaceIn { uvec2 texels[]; } surface;
 #elif defined(FIRST_PACKED)
 layout(set = 0, binding = 1) uniform texture2D integrated;  // rgb colour, a temporal variance
 layout(set = 0, binding = 6) uniform texture2D moments;     // E[l], sqrt(Var[l]), history length
@@ -62,7 +69,7 @@ layout(set = 0, binding = 1) uniform texture2D color_in;  // rgb colour, a varia
 layout(set = 0, binding = 2) uniform utexture2D depth_normal;
 #endif
 #ifdef PACKED_OUT
-layout(set = 0, binding = 3, std430) writeonly buffer ColorOut { uvec4 texels[]; } color_out;
+layout(set = 0, binding = 3, std430) writeonly buffer ColorOut { uvec2 texels[]; } color_out;
 #elif defined(COMPOSITE)
 layout(set = 0, binding = 7) uniform texture2D albedo;
 layout(set = 0, binding = 8, rgba32f) writeonly uniform image2D hdr;
@@ -82,11 +89,14 @@ layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D color_out;
 layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_history;
 #endif
 #ifdef FIRST_PACKED
+layout(set = 0, binding = 5, std430) writeonly buffer SurfaceOut { uvec2 texels[]; } surface;
 layout(set = 0, binding = 7) uniform texture2D albedo;  // the variance estimate's (COMPOSITE's binding)
 #include "common/variance_estimate.glsl"
 #endif
 
 ivec2 clamp_pixel(ivec2 q) { return clamp(q, ivec2(0), ivec2(params.width, params.height) - 1); }
+// A pixel's texels in the packed buffers (rows).
+int texel_index(ivec2 q) { return q.y * int(params.width) + q.x; }
 
 // What a tap reads: colour and variance, depth (0: no hit) and unit normal.
 struct Tap {
@@ -126,12 +136,12 @@ float variance_at(ivec2 q) { return tile_color[tile_index(q)].a; }
 #elif defined(PACKED_IN)
 // Storage-buffer loads, not texel fetches: the fetches' issue rate bounded the iteration
 // (docs/performance.md).
-uvec4 texel_at(ivec2 q) { return color_in.texels[q.y * int(params.width) + q.x]; }
 Tap read_tap(ivec2 q) {
-  const uvec4 t = texel_at(q);
-  return Tap(filter_texel_color(t), filter_texel_depth(t), filter_texel_normal(t));
+  const int i = texel_index(q);
+  const uvec2 s = surface.texels[i];
+  return Tap(unpack_color_halves(color_in.texels[i]), filter_surface_depth(s), filter_surface_normal(s));
 }
-float variance_at(ivec2 q) { return filter_texel_variance(texel_at(q)); }
+float variance_at(ivec2 q) { return color_halves_variance(color_in.texels[texel_index(q)]); }
 #else
 Tap read_tap(ivec2 q) {
   const Surface s = surface_from(texelFetch(depth_normal, q, 0));
@@ -152,7 +162,7 @@ void filter_pixel(ivec2 p) {
   // centre's own surface weighs exactly as much.
   const Tap c = read_tap(p);
 #ifdef PACKED_IN
-  const float dz = filter_texel_gradient(texel_at(p));
+  const float dz = filter_surface_gradient(surface.texels[texel_index(p)]);
 #else
   const float dz = depth_normal_gradient(texelFetch(depth_normal, p, 0));
 #endif
@@ -188,7 +198,10 @@ void filter_pixel(ivec2 p) {
   result = clamp_fp16(result);
   const vec4 stored = round_to_half_clamped(result);  // what every fp16 output below holds (common/color.glsl)
 #ifdef PACKED_OUT
-  color_out.texels[p.y * int(params.width) + p.x] = pack_filter_texel(result, center.z, dz, center.n);
+  color_out.texels[texel_index(p)] = pack_color_halves(result);
+#ifdef FIRST_PACKED
+  surface.texels[texel_index(p)] = pack_filter_surface(center.z, dz, center.n);
+#endif
 #elif defined(COMPOSITE)
   composite_pixel(p, result.rgb);
 #else

@@ -196,25 +196,28 @@ inline ImageD depth_normal_as_stored(const ImageD& dn) {
 }
 
 // ---- Packed filter texels (shaders/common/filter_texel.glsl) -----------------------------------
-// A read-back buffer of packed filter texels (4 words a pixel) as the reference's inputs: colour
-// and variance (the halves, exactly), and depth_normal with the packed depth, normal (octahedral
-// again, in double) and depth gradient (dz / z's 8-bit code times the depth, in float as the GPU).
+// Read-back buffers of packed colour and surface texels (2 words a pixel each) as the reference's
+// inputs: colour and variance (the halves, exactly), and depth_normal with the packed depth, normal
+// (octahedral again, in double) and depth gradient (dz / z's 8-bit code times the depth, in float
+// as the GPU).
 struct FilterTexels {
   ImageD color, depth_normal;
 };
-inline FilterTexels unpack_filter_texels(const ImageD& packed) {
-  FilterTexels out{ImageD(packed.width, packed.height, 4), ImageD(packed.width, packed.height, 4)};
-  for (int y = 0; y < packed.height; ++y)
-    for (int x = 0; x < packed.width; ++x) {
-      const auto word = [&](int c) { return static_cast<std::uint32_t>(packed.at(x, y, c)); };
+inline FilterTexels unpack_filter_texels(const ImageD& packed_color, const ImageD& packed_surface) {
+  const int w = packed_color.width, h = packed_color.height;
+  FilterTexels out{ImageD(w, h, 4), ImageD(w, h, 4)};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const auto color_word = [&](int c) { return static_cast<std::uint32_t>(packed_color.at(x, y, c)); };
+      const auto surface_word = [&](int c) { return static_cast<std::uint32_t>(packed_surface.at(x, y, c)); };
       const auto halves = [](std::uint32_t u) {
         return std::array<double, 2>{half_to_float(static_cast<std::uint16_t>(u & 0xffffu)),
                                      half_to_float(static_cast<std::uint16_t>(u >> 16))};
       };
-      const auto rg = halves(word(0)), ba = halves(word(1)), nxy = halves(word(3));
-      const bool z_negative = (word(2) & 0x80000000u) != 0;
-      const float z = std::abs(std::bit_cast<float>(word(2) & 0xffffff00u));
-      const std::uint32_t code = word(2) & 0xffu;
+      const auto rg = halves(color_word(0)), ba = halves(color_word(1)), nxy = halves(surface_word(1));
+      const bool z_negative = (surface_word(0) & 0x80000000u) != 0;
+      const float z = std::abs(std::bit_cast<float>(surface_word(0) & 0xffffff00u));
+      const std::uint32_t code = surface_word(0) & 0xffu;
       const float r = code == 0 ? 0.0f : std::bit_cast<float>((code + ((127u - 20u) << 3)) << 20);
       const double nz = std::sqrt(std::max(1.0 - nxy[0] * nxy[0] - nxy[1] * nxy[1], 0.0));
       const auto oct = asvgf::reference::oct_encode<double>({nxy[0], nxy[1], z_negative ? -nz : nz});

@@ -607,8 +607,9 @@ TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and 
   }
 }
 
-// Between the first and the last iteration the chain passes packed filter texels (a storage buffer
-// of 4 words a pixel: colour and variance as halves, depth and its gradient, normal x, y as halves). Each iteration
+// Between the first and the last iteration the chain passes packed filter texels (storage buffers
+// of 2 words a pixel: colour and variance as halves; and, written once by the first, depth and its
+// gradient, normal x, y as halves). Each iteration
 // is checked against the reference run on what the previous one wrote (read back and unpacked
 // exactly; the first estimates the variance and reads its taps from a shared-memory tile), so the
 // tolerance stays one fp16
@@ -651,7 +652,8 @@ TEST_CASE(
     GraphHarness harness(*device);
     RenderGraph g;
     const auto dn_in = harness.input(g, "depth_normal", depth_normal_texels(dn), F::RGBA16Uint);
-    const std::uint64_t packed_bytes = std::uint64_t{uw} * uh * 16;
+    const std::uint64_t packed_bytes = std::uint64_t{uw} * uh * 8;
+    const auto surface = g.add_buffer("filter_surface", packed_bytes);
     const auto first = g.add_buffer("atrous.1", packed_bytes);
     const auto middle = g.add_buffer("atrous.2", packed_bytes);
     const auto last = g.add_image("atrous.3", uw, uh, F::RGBA16F);
@@ -661,34 +663,38 @@ TEST_CASE(
     const ImageD estimate_albedo = random_color(r, w, h, 0.05, 1, 1);
     passes::add_atrous(
         g, pipelines,
-        {harness.input(g, "integrated", color, F::RGBA16F), dn_in, first, history_first, "",
+        {harness.input(g, "integrated", color, F::RGBA16F), dn_in, first, history_first, "", surface,
          passes::VarianceEstimateInputs{harness.input(g, "moments", moments, F::RGBA16F),
                                         harness.input(g, "estimate_albedo", estimate_albedo, F::RGBA16F)}},
         0, settings);
-    passes::add_atrous(g, pipelines, {first, dn_in, middle, history, ""}, 1, settings);
-    passes::add_atrous(g, pipelines, {middle, dn_in, last, std::nullopt, ""}, 2, settings);
+    passes::add_atrous(g, pipelines, {first, dn_in, middle, history, "", surface}, 1, settings);
+    passes::add_atrous(g, pipelines, {middle, dn_in, last, std::nullopt, "", surface}, 2, settings);
     // The same last iteration compositing itself, with a history tap on every other size.
     const ImageD albedo = random_color(r, w, h, 0, 1, 1);
     const auto hdr = g.add_image("hdr", uw, uh, F::RGBA32F), display = g.add_image("display", uw, uh, F::RGBA8Unorm);
     const bool composite_tap = w % 2 == 1;
     const auto history_last = g.add_image("color_history.3", uw, uh, F::RGBA16F, Lifetime::Persistent);
-    passes::add_atrous(g, pipelines,
-                       {middle, dn_in, 0, composite_tap ? std::optional(history_last) : std::nullopt, "", std::nullopt,
-                        passes::CompositeResources{0, harness.input(g, "albedo", albedo, F::RGBA16F), hdr, display,
-                                                   counters.import(g)}},
-                       2, settings);
-    ImageD got_first, got_middle, got_last, got_history_first, got_history, got_hdr, got_display, got_history_last;
+    passes::add_atrous(
+        g, pipelines,
+        {middle, dn_in, 0, composite_tap ? std::optional(history_last) : std::nullopt, "", surface, std::nullopt,
+         passes::CompositeResources{0, harness.input(g, "albedo", albedo, F::RGBA16F), hdr, display,
+                                    counters.import(g)}},
+        2, settings);
+    ImageD got_first, got_middle, got_surface, got_last, got_history_first, got_history, got_hdr, got_display,
+        got_history_last;
     harness.readback(g, hdr, &got_hdr);
     harness.readback(g, display, &got_display);
     if (composite_tap) harness.readback(g, history_last, &got_history_last);
-    harness.readback_buffer(g, first, w, h, 4, &got_first);
-    harness.readback_buffer(g, middle, w, h, 4, &got_middle);
+    harness.readback_buffer(g, first, w, h, 2, &got_first);
+    harness.readback_buffer(g, middle, w, h, 2, &got_middle);
+    harness.readback_buffer(g, surface, w, h, 2, &got_surface);
     harness.readback(g, last, &got_last);
     harness.readback(g, history_first, &got_history_first);
     harness.readback(g, history, &got_history);
     harness.run(g);
     const ImageD dn_q = quantize(dn, F::RGBA32F);
-    const FilterTexels t1 = unpack_filter_texels(got_first), t2 = unpack_filter_texels(got_middle);
+    const FilterTexels t1 = unpack_filter_texels(got_first, got_surface),
+                       t2 = unpack_filter_texels(got_middle, got_surface);
     const auto params = [&](int iteration) {
       return ref::AtrousParams{1 << iteration, 0, settings.sigma_z, settings.sigma_n,
                                asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height))};
@@ -765,37 +771,50 @@ TEST_CASE(
   const auto alb = g.add_image("albedo", 8, 8, F::RGBA16F);
   const passes::VarianceEstimateInputs mom{g.add_image("moments", 8, 8, F::RGBA16F), alb};
   const auto packed = [&](const char* name, std::uint64_t bytes) { return g.add_buffer(name, bytes); };
+  const auto surface = packed("surface", 8 * 8 * 8);
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, packed("out", 8 * 8 * 8), std::nullopt, "", surface, mom},
+                                     1, settings),
+                  std::invalid_argument);
+  // A packed iteration writes or reads the surface texels: without their buffer the chain has none.
   CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines, {img, dn, packed("out", 8 * 8 * 16), std::nullopt, "", mom}, 1, settings),
+      passes::add_atrous(g, pipelines, {img, dn, packed("no_surface", 8 * 8 * 8), std::nullopt, "", std::nullopt, mom},
+                         0, settings),
       std::invalid_argument);
   // The first packed iteration estimates the variance from the moments and albedo; no other reads them.
+  CHECK_THROWS_AS(passes::add_atrous(
+                      g, pipelines, {img, dn, packed("no_moments", 8 * 8 * 8), std::nullopt, "", surface}, 0, settings),
+                  std::invalid_argument);
   CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines, {img, dn, packed("no_moments", 8 * 8 * 16), std::nullopt, ""}, 0, settings),
-      std::invalid_argument);
-  CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines, {img, dn, g.add_image("image_out", 8, 8, F::RGBA16F), std::nullopt, "", mom}, 0,
+      passes::add_atrous(g, pipelines,
+                         {img, dn, g.add_image("image_out", 8, 8, F::RGBA16F), std::nullopt, "", std::nullopt, mom}, 0,
                          settings),
       std::invalid_argument);
   // A buffer or image that does not cover depth_normal would be read or written out of range.
   CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines, {img, dn, packed("small", 8 * 8 * 16 - 16), std::nullopt, "", mom}, 0, settings),
+      passes::add_atrous(g, pipelines, {img, dn, packed("small", 8 * 8 * 8 - 8), std::nullopt, "", surface, mom}, 0,
+                         settings),
       std::invalid_argument);
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines,
+                                     {img, dn, packed("out.2", 8 * 8 * 8), std::nullopt, "",
+                                      packed("small_surface", 8 * 8 * 8 - 8), mom},
+                                     0, settings),
+                  std::invalid_argument);
   CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_image("wide", 9, 8, F::RGBA16F)}, 0, settings),
                   std::invalid_argument);
   CHECK_THROWS_AS(
       passes::add_atrous(g, pipelines,
-                         {img, dn, packed("narrow_moments", 8 * 8 * 16), std::nullopt, "",
+                         {img, dn, packed("narrow_moments", 8 * 8 * 8), std::nullopt, "", surface,
                           passes::VarianceEstimateInputs{g.add_image("moments.small", 7, 8, F::RGBA16F), alb}},
                          0, settings),
       std::invalid_argument);
   CHECK_THROWS_AS(
       passes::add_atrous(g, pipelines,
-                         {img, dn, packed("narrow_albedo", 8 * 8 * 16), std::nullopt, "",
+                         {img, dn, packed("narrow_albedo", 8 * 8 * 8), std::nullopt, "", surface,
                           passes::VarianceEstimateInputs{mom.moments, g.add_image("albedo.small", 8, 7, F::RGBA16F)}},
                          0, settings),
       std::invalid_argument);
-  CHECK_NOTHROW(
-      passes::add_atrous(g, pipelines, {img, dn, packed("fits", 8 * 8 * 16), std::nullopt, "", mom}, 0, settings));
+  CHECK_NOTHROW(passes::add_atrous(g, pipelines, {img, dn, packed("fits", 8 * 8 * 8), std::nullopt, "", surface, mom},
+                                   0, settings));
 }
 
 TEST_CASE(

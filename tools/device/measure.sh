@@ -19,7 +19,8 @@
 #   vk-occupancy  Vulkan's path tracer with do-nothing shared memory (tools/device/occupancy_probe.sh
 #               first; every .devbin/asvgf_vkpad<WORDS> it built)
 #   ab          this build against another (.devbin/asvgf_base: `cp` a stripped binary of the commit
-#               before there): the bench twice each, alternately, then the issue-36 quality check,
+#               before there): the bench twice each, alternately, on each backend in $AB_BACKENDS
+#               (default vulkan; e.g. "vulkan gl"), then the issue-36 quality check,
 #               `asvgf report` at 1080p on light-exit (24 frames, asvgf) with each
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
@@ -166,9 +167,12 @@ EOF_PY
     ab)
       B=./.devbin/asvgf_base
       [ -x $B ] || { echo "measure.sh ab: $B missing" >&2; exit 2; }
-      for round in 1 2; do
-        for bin in $B $A; do
-          echo "-- $bin round $round"; timeout 60 $bin bench "${BENCH[@]}" 2>&1 | grep -E "^(gbuffer|gradient|temporal|atrous|denoiser|frame) "
+      for backend in ${AB_BACKENDS:-vulkan}; do
+        for round in 1 2; do
+          for bin in $B $A; do
+            echo "-- $bin $backend round $round"
+            timeout 60 $bin bench "${BENCH[@]}" --backend $backend 2>&1 | grep -E "^(gbuffer|gradient|temporal|atrous|denoiser|frame) "
+          done
         done
       done | tee $R/ab-bench.txt
       save

@@ -48,6 +48,8 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
     throw std::invalid_argument("add_atrous: only a one-signal chain's last packed-in iteration composites");
   if (packed_out && !packed_in && iteration != 0)
     throw std::invalid_argument("add_atrous: packed filter texels from an RGBA16F input only at iteration 0 (step 1)");
+  if ((packed_in || packed_out) && !r.surface)
+    throw std::invalid_argument("add_atrous: a packed iteration needs the surface texels' buffer");
   const bool first_packed = packed_out && !packed_in;
   if (first_packed != r.estimate.has_value())
     throw std::invalid_argument(
@@ -59,11 +61,12 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
     covering.insert(covering.end(), {r.composite->albedo, r.composite->hdr, r.composite->display});
   else
     covering.push_back(r.color_out);
+  if (r.surface) covering.push_back(*r.surface);
   if (r.estimate) covering.insert(covering.end(), {r.estimate->moments, r.estimate->albedo});
   for (const graph::ResourceId id : covering) {
     const auto& other = graph.resource(id);
     const bool covers = other.kind == hal::ResourceKind::Buffer
-                            ? other.size >= std::uint64_t{16} * decl.width * decl.height
+                            ? other.size >= std::uint64_t{8} * decl.width * decl.height
                             : other.width == decl.width && other.height == decl.height;
     if (!covers)
       throw std::invalid_argument("add_atrous: '" + other.name + "' does not match depth_normal's " +
@@ -88,7 +91,8 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
   else
     bindings.push_back({"color_out", r.color_out});
   if (first_packed) bindings.insert(bindings.end(), {{"moments", r.estimate->moments}, {"albedo", r.estimate->albedo}});
-  if (!packed_in) bindings.push_back({"depth_normal", r.depth_normal});  // packed texels carry the surface
+  if (packed_in || first_packed) bindings.push_back({"surface", *r.surface});
+  if (!packed_in) bindings.push_back({"depth_normal", r.depth_normal});
   if (r.color_history) bindings.push_back({"color_history", *r.color_history});
   const hal::ShaderInfo& shader = atrous_shader(packed_in, packed_out, r.color_history.has_value(), composite);
   const auto pipeline = pipelines.get<Uniforms>(shader);

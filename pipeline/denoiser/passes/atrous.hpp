@@ -18,17 +18,20 @@ struct VarianceEstimateInputs {
 };
 
 struct AtrousResources {
-  // color_in and color_out: RGBA16F images (rgb, variance) or storage buffers of packed filter
-  // texels (16 bytes a pixel, in rows; shaders/common/filter_texel.glsl), which carry the surface too
-  // and which the iterations between a chain's first and last pass on. A buffer out from an image in
-  // is the first iteration only (it reads a shared-memory tile that needs step 1), and it estimates
-  // the variance itself: its color_in is the temporal pass's output (rgb, temporal variance) and it
-  // also reads `estimate` (the variance pass's other inputs).
+  // color_in and color_out: RGBA16F images (rgb, variance) or storage buffers of packed colour
+  // texels (8 bytes a pixel, in rows; shaders/common/filter_texel.glsl), which the iterations between
+  // a chain's first and last pass on, with the packed surface texels in `surface`. A buffer out from
+  // an image in is the first iteration only (it reads a shared-memory tile that needs step 1): it
+  // writes `surface`, and it estimates the variance itself: its color_in is the temporal pass's
+  // output (rgb, temporal variance) and it also reads `estimate` (the variance pass's other inputs).
   graph::ResourceId color_in = 0;                  // read
   graph::ResourceId depth_normal = 0;              // read (not by packed-in iterations): RGBA16UI; the size
   graph::ResourceId color_out = 0;                 // written (not with `composite`)
   std::optional<graph::ResourceId> color_history;  // also written (persistent RGBA16F) at the history tap
   std::string prefix;                              // of the pass name: "specular." for the second signal
+  // Packed surface texels (8 bytes a pixel: depth, its gradient, normal): written by the first packed
+  // iteration, read by every packed-in one instead of depth_normal.
+  std::optional<graph::ResourceId> surface;
   // Read by the first packed iteration's variance estimate: the moments, RGBA16F (E[l], sqrt(Var[l]), n),
   // and the albedo the signal is re-modulated by (the spatial estimate compares radiance).
   std::optional<VarianceEstimateInputs> estimate;
@@ -41,7 +44,8 @@ struct AtrousResources {
 // Adds "<prefix>atrous.<iteration + 1>" with step 2^iteration and the settings' kernel and sigmas.
 // The dispatch covers depth_normal's size. Throws std::invalid_argument for a buffer out from an
 // image in at an iteration other than 0, for colour images of another size or buffers smaller
-// than 16 bytes a pixel, for the first packed iteration without moments (or moments given to another), and for
+// than 8 bytes a pixel, for a packed iteration without `surface`, for the first packed iteration
+// without moments (or moments given to another), and for
 // `composite` on another iteration or with a specular signal.
 graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
                               int iteration, const DenoiseSettings& settings);

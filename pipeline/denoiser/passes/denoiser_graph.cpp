@@ -60,18 +60,19 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   add_variance(graph, pipelines, {c.integrated, c.moments, in.depth_normal, current, albedo, prefix}, s);
   const std::uint64_t range = pipelines.device().capabilities().max_storage_buffer_range;
   const std::uint64_t max_storage_binding = range ? range : std::uint64_t{1} << 27;  // 0: not known
-  bool packed_before = false;  // an earlier iteration wrote packed texels
+  std::optional<ResourceId> surface;  // the packed surface texels, once an iteration writes them
   for (int i = 0; i < s.atrous_iterations; ++i) {
     // Packed filter texels between the 5x5 kernel's iterations: one load a tap (denoiser/passes/atrous.hpp).
     // The 3x3 box's 8 taps gain less than the wider texel costs (measured: docs/performance.md).
     // Images too where the buffer would exceed the device's largest storage binding (Vulkan, OpenGL
     // ES and WebGPU guarantee 2^27 bytes: 4K fits, 8K does not).
     const std::string name = prefix + "atrous." + std::to_string(i + 1);
-    const std::uint64_t packed_bytes = std::uint64_t{w} * h * 16;
+    const std::uint64_t packed_bytes = std::uint64_t{w} * h * 8;
     const bool packed =
         i + 1 < s.atrous_iterations && s.kernel == AtrousKernel::B3Spline && packed_bytes <= max_storage_binding;
     const ResourceId next = packed ? graph.add_buffer(name, packed_bytes) : graph.add_image(name, w, h, F::RGBA16F);
-    const bool first_packed = packed && !packed_before;
+    const bool first_packed = packed && !surface;
+    if (first_packed) surface = graph.add_buffer(prefix + "filter_surface", packed_bytes);
     // With the local-mean correction the tapped history is corrected too (after this iteration):
     // uncorrected, the filter's energy loss would feed back through the history into the temporal
     // result that the displayed colour is corrected toward.
@@ -80,16 +81,16 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
         !tap ? std::nullopt
              : std::optional(local_mean ? graph.add_image(prefix + "color_history_filtered", w, h, F::RGBA16F)
                                         : c.color_history);
-    const bool last_packed = i + 1 == s.atrous_iterations && packed_before && !packed;
+    const bool last_packed = i + 1 == s.atrous_iterations && surface && !packed;
     if (last_packed && composite) {
       // The filtered image is still declared, by an iteration without the history tap that only
       // runs where something reads it (the tests' readbacks): the graph leaves it out otherwise.
-      add_atrous(graph, pipelines, {current, in.depth_normal, next, history, prefix, {}, composite}, i, s);
+      add_atrous(graph, pipelines, {current, in.depth_normal, next, history, prefix, surface, {}, composite}, i, s);
       c.composited = true;
-      add_atrous(graph, pipelines, {current, in.depth_normal, next, std::nullopt, prefix}, i, s);
+      add_atrous(graph, pipelines, {current, in.depth_normal, next, std::nullopt, prefix, surface}, i, s);
     } else {
       add_atrous(graph, pipelines,
-                 {first_packed ? c.integrated : current, in.depth_normal, next, history, prefix,
+                 {first_packed ? c.integrated : current, in.depth_normal, next, history, prefix, surface,
                   first_packed ? std::optional(VarianceEstimateInputs{c.moments, albedo}) : std::nullopt},
                  i, s);
     }
@@ -97,7 +98,6 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
       add_local_mean(graph, pipelines, {c.integrated, *history, c.color_history, prefix + "local_mean.history", false},
                      s);
     current = next;
-    packed_before = packed_before || packed;
   }
   c.filtered = current;
   return c;

@@ -12,12 +12,16 @@ std::string to_glsl(const std::vector<std::uint32_t>& spirv, const Reflection& r
   options.version = es ? 310 : 450;
   options.es = es;
   options.vulkan_semantics = false;
+  // Every value in a temporary: otherwise SPIRV-Cross writes a load from a buffer it sees no store
+  // to into each use of the value (a packed texel's word read again for its depth, sign and
+  // gradient), and NVIDIA's OpenGL compiler keeps several of those loads (docs/performance.md).
+  options.force_temporary = true;
   compiler.set_common_options(options);
 
   // Sets collide in GL (SPIRV-Cross keeps `binding` and drops `set`): give each resource its unit.
   const auto resources = compiler.get_shader_resources();
-  for (const auto* list : {&resources.uniform_buffers, &resources.storage_buffers, &resources.separate_images,
-                           &resources.storage_images})
+  for (const auto* list :
+       {&resources.uniform_buffers, &resources.storage_buffers, &resources.separate_images, &resources.storage_images})
     for (const auto& r : *list) {
       const auto set = compiler.get_decoration(r.id, spv::DecorationDescriptorSet);
       const auto binding = compiler.get_decoration(r.id, spv::DecorationBinding);
