@@ -397,4 +397,31 @@ CompositeResult composite(const ImageD& illumination, const ImageD& albedo, doub
   return out;
 }
 
+ImageD local_mean(const ImageD& temporal, const ImageD& filtered, int k, bool gated) {
+  const int w = filtered.width, h = filtered.height, radius = (k - 1) / 2;
+  const auto lum = [](const ImageD& img, int x, int y) {
+    return luminance(img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2));
+  };
+  ImageD out(w, h, 4);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      double sum_t = 0, sum_f = 0, sum_t2 = 0;
+      int n = 0;
+      for (int qy = std::max(y - radius, 0); qy <= std::min(y + radius, h - 1); ++qy)
+        for (int qx = std::max(x - radius, 0); qx <= std::min(x + radius, w - 1); ++qx) {
+          const double t = lum(temporal, qx, qy);
+          sum_t += t, sum_f += lum(filtered, qx, qy), sum_t2 += t * t, ++n;
+        }
+      const double mean_t = sum_t / n, mean_f = sum_f / n, mean_t2 = sum_t2 / n;
+      // The gate's standard error counts k^2 pixels also where the window is clamped (as the shader).
+      const double d2 = (mean_t - mean_f) * (mean_t - mean_f);
+      const double se2 = std::max(mean_t2 - mean_t * mean_t, 0.0) / (double(k) * k);
+      const double g = !gated ? 1.0 : d2 + se2 > 0 ? d2 / (d2 + se2) : 0.0;
+      const double scale = mean_f > 1e-6 ? 1 + g * (mean_t / mean_f - 1) : 1.0;
+      for (int c = 0; c < 3; ++c) out.at(x, y, c) = filtered.at(x, y, c) * scale;
+      out.at(x, y, 3) = filtered.at(x, y, 3);
+    }
+  return out;
+}
+
 }  // namespace asvgf::reference

@@ -99,4 +99,8 @@ struct CompositeResult {
 // composite.comp; tonemap 0: clamp, 1: ACES (Narkowicz).
 CompositeResult composite(const ImageD& illumination, const ImageD& albedo, double exposure, int tonemap);
 
+// local_mean.comp: the filtered colour (alpha kept) scaled toward the temporal result's k x k local
+// mean of luminance (windows clamped at the image's edges), by the gate or by the plain ratio.
+ImageD local_mean(const ImageD& temporal, const ImageD& filtered, int k, bool gated);
+
 }  // namespace asvgf::reference

@@ -20,6 +20,7 @@
 #include "denoiser/passes/convert_inputs.hpp"
 #include "denoiser/passes/gradient.hpp"
 #include "denoiser/passes/gradient_atrous.hpp"
+#include "denoiser/passes/local_mean.hpp"
 #include "denoiser/passes/pack_surface.hpp"
 #include "denoiser/passes/temporal.hpp"
 #include "denoiser/passes/variance.hpp"
@@ -815,6 +816,44 @@ TEST_CASE(
       std::invalid_argument);
   CHECK_NOTHROW(passes::add_atrous(g, pipelines, {img, dn, packed("fits", 8 * 8 * 8), std::nullopt, "", surface, mom},
                                    0, settings));
+}
+
+// The local-mean correction (--local-mean): two passes, a box separated into row means and a column
+// average, against the reference's direct k x k box. Windows larger than the image and clamped at
+// its edges, a black neighbourhood (left as it is), the gate and the plain ratio.
+TEST_CASE(
+    "denoise passes: the local-mean correction matches the CPU reference (gated and plain, windows clamped at the "
+    "edges, a black neighbourhood left unscaled)") {
+  ValidatedDevice device;
+  passes::PipelineCache pipelines(*device);
+  for (const int k : {3, 9, 65}) {
+    for (const bool gated : {true, false}) {
+      CAPTURE(k);
+      CAPTURE(gated);
+      const int w = 23, h = 17;
+      Random r(131u + static_cast<std::uint32_t>(k));
+      // The temporal result brighter than the filtered one on average, as where the filter lost energy.
+      ImageD temporal = random_color(r, w, h, 0, 4, 1), filtered = random_color(r, w, h, 0, 3, 1);
+      for (int y = 0; y < 4; ++y)  // a black corner: nothing filtered to scale there
+        for (int x = 0; x < 4; ++x)
+          for (int c = 0; c < 3; ++c) filtered.at(x, y, c) = temporal.at(x, y, c) = 0;
+      asvgf::DenoiseSettings settings;
+      settings.local_mean = k;
+      GraphHarness harness(*device);
+      RenderGraph g;
+      const auto corrected = g.add_image("corrected", w, h, F::RGBA16F);
+      passes::add_local_mean(g, pipelines,
+                             {harness.input(g, "temporal", temporal, F::RGBA16F),
+                              harness.input(g, "filtered", filtered, F::RGBA16F), corrected, "local_mean", gated},
+                             settings);
+      ImageD got;
+      harness.readback(g, corrected, &got);
+      harness.run(g);
+      const ImageD want = ref::local_mean(quantize(temporal, F::RGBA16F), quantize(filtered, F::RGBA16F), k, gated);
+      DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(4)), "local mean");
+      if (k == 3) CHECK(got.at(1, 1, 0) == 0.0);  // inside the black corner: 0 stays 0, no NaN
+    }
+  }
 }
 
 TEST_CASE(
