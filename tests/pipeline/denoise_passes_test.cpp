@@ -819,24 +819,31 @@ TEST_CASE(
 }
 
 // The local-mean correction (--local-mean): two passes, a box separated into row means and a column
-// average, against the reference's direct k x k box. Windows larger than the image and clamped at
-// its edges, a black neighbourhood (left as it is), the gate and the plain ratio.
+// average from shared-memory tiles, against the reference's direct k x k box. Windows larger than
+// the image, clamped at its edges and across workgroups, a black neighbourhood (left as it is), the
+// gate and the plain ratio.
 TEST_CASE(
     "denoise passes: the local-mean correction matches the CPU reference (gated and plain, windows clamped at the "
-    "edges, a black neighbourhood left unscaled)") {
+    "edges and across workgroups, a black neighbourhood left unscaled)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
-  for (const int k : {3, 9, 65}) {
+  // 23x17: one workgroup's span (128 a row, 32 a column) holds the image; 300x70: windows cross
+  // workgroups in both passes, up to the largest k.
+  struct Case {
+    int w, h, k;
+  };
+  for (const Case c : {Case{23, 17, 3}, Case{23, 17, 9}, Case{23, 17, 65}, Case{300, 70, 33}, Case{300, 70, 255}}) {
     for (const bool gated : {true, false}) {
+      const int w = c.w, h = c.h, k = c.k;
+      CAPTURE(w);
       CAPTURE(k);
       CAPTURE(gated);
-      const int w = 23, h = 17;
       Random r(131u + static_cast<std::uint32_t>(k));
       // The temporal result brighter than the filtered one on average, as where the filter lost energy.
       ImageD temporal = random_color(r, w, h, 0, 4, 1), filtered = random_color(r, w, h, 0, 3, 1);
       for (int y = 0; y < 4; ++y)  // a black corner: nothing filtered to scale there
         for (int x = 0; x < 4; ++x)
-          for (int c = 0; c < 3; ++c) filtered.at(x, y, c) = temporal.at(x, y, c) = 0;
+          for (int ch = 0; ch < 3; ++ch) filtered.at(x, y, ch) = temporal.at(x, y, ch) = 0;
       asvgf::DenoiseSettings settings;
       settings.local_mean = k;
       GraphHarness harness(*device);
