@@ -62,10 +62,10 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   const std::uint64_t max_storage_binding = range ? range : std::uint64_t{1} << 27;  // 0: not known
   std::optional<ResourceId> surface;  // the packed surface texels, once an iteration writes them
   for (int i = 0; i < s.atrous_iterations; ++i) {
-    // Packed filter texels between the 5x5 kernel's iterations: one load a tap (denoiser/passes/atrous.hpp).
-    // The 3x3 box's 8 taps gain less than the wider texel costs (measured: docs/performance.md).
-    // Images too where the buffer would exceed the device's largest storage binding (Vulkan, OpenGL
-    // ES and WebGPU guarantee 2^27 bytes: 4K fits, 8K does not).
+    // Packed filter texels between the 5x5 kernel's iterations: two loads a tap, no decode
+    // (denoiser/passes/atrous.hpp). The 3x3 box's 8 taps gain less than the wider texel costs (measured:
+    // docs/performance.md). Images too where the buffer would exceed the device's largest storage binding (Vulkan,
+    // OpenGL ES and WebGPU guarantee 2^27 bytes: 4K fits, 8K does not).
     const std::string name = prefix + "atrous." + std::to_string(i + 1);
     const std::uint64_t packed_bytes = std::uint64_t{w} * h * 8;
     const bool packed =
