@@ -31,11 +31,10 @@ const int kGroupY = 32;
 #endif
 layout(local_size_x = kGroupX, local_size_y = kGroupY) in;
 #ifdef ROWS
-const int kTileLength = kGroupX + 2 * kMaxRadius;  // along the row
+const int kTileEntries = kGroupX + 2 * kMaxRadius;  // one row and its apron
 #else
-const int kTileLength = kGroupY + 2 * kMaxRadius;  // down the column
+const int kTileEntries = kGroupX * (kGroupY + 2 * kMaxRadius);  // kGroupX columns and their apron
 #endif
-const int kTileEntries = (kGroupX * kGroupY / (kGroupX > kGroupY ? kGroupX : kGroupY)) * kTileLength;
 
 layout(set = 0, binding = 0) uniform Params {
   uint width;
