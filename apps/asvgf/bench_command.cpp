@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "asvgf/pass_traffic.hpp"
+#include "cache_latency.hpp"
 #include "commands.hpp"
 #include "copy_bandwidth.hpp"
 #include "report/sequence_metrics.hpp"
@@ -25,6 +26,7 @@ struct BenchOptions {
   int first_frame = 4;
   int bandwidth_mib = 0;   // 0: 256 MiB on a GPU, 16 MiB on a CPU device
   float time_step = 1.0f;  // scene time per frame
+  bool cache_latency = false;
 };
 
 // The passes that trace rays (pathtrace_carried: A-SVGF's re-shaded gradient samples, apart with
@@ -41,6 +43,34 @@ struct Floor {
 };
 
 using report::median;
+
+void print_cache_latency(hal::Device& device) {
+  const auto rows = measure_cache_latency(device);
+  if (rows.empty()) {
+    std::printf("\ncache latency:         not measured (the device has no timestamps)\n");
+    return;
+  }
+  std::printf("\ncache latency (ns a load, each load's address the last one's value; medians of 5 walks):\n");
+  std::printf("%12s %16s %16s\n", "working set", "storage buffer", "sampled image");
+  auto cell = [](const std::optional<double>& ns) {
+    if (ns)
+      std::printf(" %16.1f", *ns);
+    else
+      std::printf(" %16s", "-");
+  };
+  for (const auto& r : rows) {
+    if (r.working_set >= (1u << 20))
+      std::printf("%9llu MiB", static_cast<unsigned long long>(r.working_set >> 20));
+    else
+      std::printf("%9llu KiB", static_cast<unsigned long long>(r.working_set >> 10));
+    cell(r.buffer_ns);
+    cell(r.image_ns);
+    std::printf("\n");
+  }
+  std::printf(
+      "  (where the time steps up, a cache ends; a backend whose buffer column steps up earlier than its\n"
+      "  image column, or than another backend's, gives its buffer loads less cache: hal/PORTING.md)\n");
+}
 
 int run_bench(BenchOptions& o) {
   finish_scene_options(o.scene);
@@ -126,6 +156,7 @@ int run_bench(BenchOptions& o) {
               static_cast<unsigned long long>(renderer.rays_last_frame()));
   std::printf("tracing time:          %.3f ms (gbuffer + pathtrace + pathtrace_carried)\n", median(trace_ms));
   std::printf("rays per second:       %.2f M\n", median(rays_per_s) * 1e-6);
+  if (o.cache_latency) print_cache_latency(*device);
   return 0;
 }
 
@@ -150,6 +181,9 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_option("--bandwidth-mib", o->bandwidth_mib,
                   "Size of the copy that measures the bandwidth for the floors (default: 256 on a GPU, 16 on a CPU)")
       ->check(CLI::Range(1, 4096));
+  cmd->add_flag("--cache-latency", o->cache_latency,
+                "After the frames, time chains of dependent loads from 8 KiB to 64 MiB through a storage buffer and "
+                "a sampled image: where each kind of load's cache ends (porting: hal/PORTING.md)");
   return [o] { return run_bench(*o); };
 }
 
