@@ -21,9 +21,11 @@ void add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const L
                    {{"temporal", r.temporal}, {"filtered", r.filtered}, {"row_means", rows}}, to_bytes(u),
                    {u.width, u.height, 1});
   const hal::ShaderInfo& columns_shader = asvgf::shaders::local_mean_columns;
+  // An invocation a strip of rows of one column (local_mean.comp, kStrip).
+  constexpr std::uint32_t kStrip = 16;
   add_compute_pass(graph, r.name, columns_shader, pipelines.get<Uniforms>(columns_shader),
                    {{"row_means", rows}, {"filtered", r.filtered}, {"corrected", r.corrected}}, to_bytes(u),
-                   {u.width, u.height, 1});
+                   {u.width, (u.height + kStrip - 1) / kStrip, 1});
 }
 
 }  // namespace asvgf::passes
