@@ -18,6 +18,9 @@
 #   gl-composite  OpenGL's last a-trous iteration with the composite's stores or its pow edited out
 #   vk-occupancy  Vulkan's path tracer with do-nothing shared memory (tools/device/occupancy_probe.sh
 #               first; every .devbin/asvgf_vkpad<WORDS> it built)
+#   resident    the path tracer's resident workgroups, counted (tools/device/resident_probe.sh first:
+#               .devbin/asvgf_resident), on every backend, cornell and many; divide by the SMs
+#   cache       asvgf bench --cache-latency on every backend: where each kind of load's cache ends
 #   ab          this build against another (.devbin/asvgf_base: `cp` a stripped binary of the commit
 #               before there): the bench twice each, alternately, on each backend in $AB_BACKENDS
 #               (default vulkan; e.g. "vulkan gl"), then the issue-36 quality check,
@@ -164,6 +167,22 @@ EOF_PY
           echo "-- $bin round $round"; timeout 60 $bin bench "${BENCH[@]}" 2>&1 | grep -E "^(pathtrace|frame) "
         done
       done | tee $R/vk-occupancy.txt ;;
+    resident)
+      # issue 37: how many path-tracing workgroups each backend's compiled program keeps resident
+      # (the most in a frame, every frame; OpenGL reports no registers). 132 SMs on the H100 and H200.
+      P=./.devbin/asvgf_resident
+      [ -x $P ] || { echo "measure.sh resident: $P missing (tools/device/resident_probe.sh)" >&2; exit 2; }
+      for scene in cornell many; do
+        for backend in vulkan gl gles; do
+          echo "-- $scene $backend"
+          timeout 60 $P bench "${BENCH[@]}" --scene $scene --backend $backend 2>&1 |
+            grep -E "^resident|^pathtrace " | sort | uniq -c | sort -rn | head -3
+        done
+      done | tee $R/resident.txt ;;
+    cache)
+      for backend in vulkan gl gles; do
+        echo "-- $backend"; timeout 120 $A bench "${BENCH[@]}" --backend $backend --cache-latency 2>&1 | sed -n '/^copy/p;/cache latency/,$p'
+      done | tee $R/cache.txt ;;
     ab)
       B=./.devbin/asvgf_base
       [ -x $B ] || { echo "measure.sh ab: $B missing" >&2; exit 2; }
