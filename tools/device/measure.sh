@@ -161,7 +161,7 @@ EOF_PY
     vk-occupancy)
       # issue 37: Vulkan's path tracer with its workgroups a SM limited by do-nothing shared memory
       # (binaries from tools/device/occupancy_probe.sh): if it slows toward OpenGL's time, OpenGL's
-      # register use (over 200 against Vulkan's 72) is what holds its path tracer down.
+      # register use is what holds its path tracer down (counted since: the `resident` step).
       for round in 1 2; do
         for bin in $A .devbin/asvgf_vkpad*; do
           echo "-- $bin round $round"; timeout 60 $bin bench "${BENCH[@]}" 2>&1 | grep -E "^(pathtrace|frame) "
