@@ -32,6 +32,14 @@ std::vector<std::uint32_t> make_chain(std::uint32_t elements, std::uint32_t seed
   return words;
 }
 
+// A host upload leaves the chain in CopyDst; the walks read it.
+void make_readable(hal::Device& device, hal::Resource chain) {
+  auto commands = device.create_command_list("cache latency chain");
+  commands->barrier({chain, hal::State::CopyDst, hal::State::ShaderRead});
+  device.submit(*commands);
+  device.wait();
+}
+
 struct Walk {
   std::uint32_t steps, start_step, elements, groups;
   std::uint32_t width_shift = 0;  // the image variant's rows are 1 << width_shift texels
@@ -115,10 +123,7 @@ std::vector<CacheLatency> measure_cache_latency(hal::Device& device) {
       const hal::BufferHandle chain =
           device.create_buffer({"cache latency chain", bytes, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst});
       device.upload_buffer(chain, 0, std::as_bytes(std::span(words)));
-      auto to_read = device.create_command_list("cache latency chain");
-      to_read->barrier({chain, hal::State::CopyDst, hal::State::ShaderRead});
-      device.submit(*to_read);
-      device.wait();
+      make_readable(device, chain);
       row.buffer_ns = time_walks(device, shaders::cache_latency_buffer, chain, words, w, 5);
       device.destroy(chain);
     }
@@ -132,10 +137,7 @@ std::vector<CacheLatency> measure_cache_latency(hal::Device& device) {
       std::vector<std::uint32_t> texels = words;
       texels.resize(std::size_t{width} * height, 0u);  // the last row's tail: never reached
       device.upload_image(chain, std::as_bytes(std::span(texels)));
-      auto to_read = device.create_command_list("cache latency chain");
-      to_read->barrier({chain, hal::State::CopyDst, hal::State::ShaderRead});
-      device.submit(*to_read);
-      device.wait();
+      make_readable(device, chain);
       row.image_ns = time_walks(device, shaders::cache_latency_image, chain, words, wi, 5);
       device.destroy(chain);
     }
