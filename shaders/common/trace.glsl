@@ -175,8 +175,9 @@ vec3 safe_inverse(vec3 d) {
 // Two loops in turn ("while-while", Aila and Laine, HPG 2009): interior nodes until a leaf (or the
 // stack's end), then that leaf's triangles. A warp's lanes reach their leaves at different steps;
 // here they test triangles together, where a leaf loop inside the node loop ran each lane's leaf
-// while the others waited: path tracing 11-20% faster on NVIDIA's Vulkan and OpenGL, frames the
-// same (docs/performance.md, "The traversal as two loops").
+// while the others waited. Frames the same; on NVIDIA, path tracing 11-20% faster on OpenGL and
+// 13-15% on Vulkan, but for the largest scene, 2% slower there (docs/performance.md, "The traversal
+// as two loops").
 Hit traverse(vec3 o, vec3 d, float tmin, float tmax, uint skip, bool any_hit) {
   Hit h = no_hit(tmax);
   ShearedRay r = shear_ray(o, d);

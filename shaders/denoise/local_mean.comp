@@ -14,7 +14,7 @@
 // sums each window there (reading every tap from the images cost 0.65 ms a frame at k 33 and
 // 1080p: docs/quality.md); the column pass slides a running sum down a strip of kStrip rows an
 // invocation, two row reads an output whatever k is, and starts each strip's sum afresh so that the
-// sum's rounding does not build up (docs/performance.md).
+// sum's rounding does not build up (docs/quality.md, "The column pass as a running sum").
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
