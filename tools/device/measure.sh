@@ -21,6 +21,8 @@
 #   resident    the path tracer's resident workgroups, counted (tools/device/resident_probe.sh first:
 #               .devbin/asvgf_resident), on every backend, cornell and many; divide by the SMs
 #   cache       asvgf bench --cache-latency on every backend: where each kind of load's cache ends
+#   bvh         path tracing with the BVH builder's leaf rules changed (tools/device/bvh_probe.sh first:
+#               every .devbin/asvgf_bvh<LEAF>x<CAP>) against this build: cornell, textured, many; Vulkan, OpenGL
 #   ab          this build against another (.devbin/asvgf_base: `cp` a stripped binary of the commit
 #               before there): the bench twice each, alternately, on each backend in $AB_BACKENDS
 #               (default vulkan; e.g. "vulkan gl"), then the issue-36 quality check,
@@ -179,6 +181,16 @@ EOF_PY
             grep -E "^resident|^pathtrace " | sort | uniq -c | sort -rn | head -3
         done
       done | tee $R/resident.txt ;;
+    bvh)
+      # Small scenes gained from smaller leaves where `many` lost (docs/performance.md, "The BVH's leaves").
+      for scene in cornell textured many; do
+        for bin in $A .devbin/asvgf_bvh*; do
+          for backend in vulkan gl; do
+            echo "-- $bin $scene $backend: $(timeout 60 $bin bench "${BENCH[@]}" --scene $scene --backend $backend 2>&1 |
+              grep -E '^(gbuffer|pathtrace|frame) ' | awk '{printf "%s %s  ", $1, $2}')"
+          done
+        done
+      done | tee $R/bvh.txt ;;
     cache)
       for backend in vulkan gl gles; do
         echo "-- $backend"; timeout 120 $A bench "${BENCH[@]}" --backend $backend --cache-latency 2>&1 | sed -n '/^copy/p;/cache latency/,$p'
