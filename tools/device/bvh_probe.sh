@@ -9,21 +9,14 @@
 #   bash tools/device/bvh_probe.sh [LEAF:CAP...]   (default 2:4 4:2 3:4)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
-files=(pipeline/renderer/bvh.hpp pipeline/renderer/bvh.cpp)
-saved=$(mktemp -d)
-for f in "${files[@]}"; do cp "$f" "$saved/$(basename "$f")"; done
-restore() {
-  for f in "${files[@]}"; do cp "$saved/$(basename "$f")" "$f"; done
-  rm -rf "$saved"
-  cmake --build --preset default > /dev/null
-}
-trap restore EXIT
+source tools/device/patched_sources.sh
+keep_sources pipeline/renderer/bvh.hpp pipeline/renderer/bvh.cpp
 variants=("$@")
 [ ${#variants[@]} -gt 0 ] || variants=(2:4 4:2 3:4)
 mkdir -p .devbin
 for variant in "${variants[@]}"; do
   leaf=${variant%%:*} cap=${variant##*:}
-  for f in "${files[@]}"; do cp "$saved/$(basename "$f")" "$f"; done
+  reset_sources
   python3 - "$leaf" "$cap" <<'PY'
 import sys
 leaf, cap = sys.argv[1], sys.argv[2]

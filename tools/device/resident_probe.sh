@@ -10,15 +10,8 @@
 #   bash tools/device/resident_probe.sh
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
-files=(shaders/renderer/pathtrace.comp pipeline/renderer/renderer.cpp pipeline/renderer/frame_graph.cpp)
-saved=$(mktemp -d)
-for f in "${files[@]}"; do cp "$f" "$saved/$(basename "$f")"; done
-restore() {
-  for f in "${files[@]}"; do cp "$saved/$(basename "$f")" "$f"; done
-  rm -rf "$saved"
-  cmake --build --preset default > /dev/null
-}
-trap restore EXIT
+source tools/device/patched_sources.sh
+keep_sources shaders/renderer/pathtrace.comp pipeline/renderer/renderer.cpp pipeline/renderer/frame_graph.cpp
 python3 - <<'PY'
 import sys
 def patch(path, edits):
