@@ -34,7 +34,7 @@ static_assert(sizeof(TriangleBox) == 24);
 std::vector<TriangleBox> padded_triangle_boxes(std::span<const glm::vec3> triangle_vertices);
 
 struct Bvh {
-  std::vector<BvhNode> nodes;           // nodes[0] is the root
+  std::vector<BvhNode> nodes;            // nodes[0] is the root
   std::vector<std::uint32_t> triangles;  // triangle indices, leaves refer to ranges of it
   // Expected cost under the SAH (traversal 1, intersection 1), relative to the root's area.
   double sah_cost = 0.0;
@@ -42,7 +42,10 @@ struct Bvh {
 };
 
 struct BvhOptions {
-  std::uint32_t max_leaf_triangles = 4;
+  // Always a leaf at this many triangles; the SAH may still choose one up to 4 times as many. 3 (against 2
+  // and 4) had the fastest path tracing on the small built-in scenes (-7% to -10% against 4) for +0.6% on
+  // `many` (docs/performance.md, "The BVH's leaves").
+  std::uint32_t max_leaf_triangles = 3;
   std::uint32_t bins = 16;
 };
 

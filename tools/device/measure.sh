@@ -21,6 +21,8 @@
 #   resident    the path tracer's resident workgroups, counted (tools/device/resident_probe.sh first:
 #               .devbin/asvgf_resident), on every backend, cornell and many; divide by the SMs
 #   cache       asvgf bench --cache-latency on every backend: where each kind of load's cache ends
+#   gaps        every pass timed from the previous pass's end (tools/device/timer_gaps_probe.sh first:
+#               .devbin/asvgf_gaps) against the normal timers, Vulkan and OpenGL, 1080p and 480x270
 #   bvh         path tracing with the BVH builder's leaf rules changed (tools/device/bvh_probe.sh first:
 #               every .devbin/asvgf_bvh<LEAF>x<CAP>) against this build: cornell, textured, many; Vulkan, OpenGL
 #   ab          this build against another (.devbin/asvgf_base: `cp` a stripped binary of the commit
@@ -181,6 +183,21 @@ EOF_PY
             grep -E "^resident|^pathtrace " | sort | uniq -c | sort -rn | head -3
         done
       done | tee $R/resident.txt ;;
+    gaps)
+      # issue 37's small passes: each pass timed from the previous pass's end (tools/device/
+      # timer_gaps_probe.sh first: .devbin/asvgf_gaps), so that a barrier OpenGL applies inside the
+      # next pass's region counts on both APIs; beside the normal timers, at 1080p and 480x270.
+      P=./.devbin/asvgf_gaps
+      [ -x $P ] || { echo "measure.sh gaps: $P missing (tools/device/timer_gaps_probe.sh)" >&2; exit 2; }
+      for gsize in "$size" 480x270; do
+        for bin in $A $P; do
+          for backend in vulkan gl; do
+            echo "-- $bin $gsize $backend"
+            timeout 60 $bin bench "${BENCH[@]/#$size/$gsize}" --backend $backend 2>&1 |
+              grep -E "^(gbuffer|pathtrace|gradient|temporal|atrous|denoiser|frame)[^ ]* " | awk '{print $1, $2}'
+          done
+        done
+      done | tee $R/gaps.txt ;;
     bvh)
       # Small scenes gained from smaller leaves where `many` lost (docs/performance.md, "The BVH's leaves").
       for scene in cornell textured many; do
