@@ -1,5 +1,6 @@
-# Sourced by the probe builders (bvh_probe.sh, resident_probe.sh): keeps copies of the sources a
-# probe patches, puts them back on exit (also when a build fails) and rebuilds the normal binary.
+# Sourced by the probe builders (bvh_probe.sh, resident_probe.sh, timer_gaps_probe.sh): keeps
+# copies of the sources a probe patches, puts them back on exit (also when a build fails) and
+# rebuilds the normal binary.
 #   keep_sources FILE...   save FILEs; restored when the script exits
 #   reset_sources          put the saved FILEs back now (before patching the next variant)
 kept_files=()
