@@ -137,7 +137,7 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
   add_setting_option(cmd, "--local-mean", d.local_mean, "local_mean",
                      "Scale the filtered colour (and the colour history the a-trous tap feeds) toward the temporal "
                      "result's K x K local mean of luminance (energy and contrast the a-trous filter loses; opt-in, "
-                     "measured up to 256x256, K near a tenth of the image's side; 0: off)");
+                     "K near a sixteenth of the image's height: 5 at 64x64, 65 at 1080p with --antilag 8; 0: off)");
 }
 
 std::optional<ImageSize> parse_size(std::string_view text) {
