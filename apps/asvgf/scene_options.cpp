@@ -134,10 +134,11 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
       cmd, "--history-tap", d.history_tap, "history_tap",
       "A-trous iteration whose output feeds the colour history (0: the first, SVGF; -1: none, the temporal "
       "result unfiltered)");
-  add_setting_option(cmd, "--local-mean", d.local_mean, "local_mean",
-                     "Scale the filtered colour (and the colour history the a-trous tap feeds) toward the temporal "
-                     "result's K x K local mean of luminance (energy and contrast the a-trous filter loses; opt-in, "
-                     "K near a sixteenth of the image's height: 5 at 64x64, 65 at 1080p with --antilag 8; 0: off)");
+  add_setting_option(
+      cmd, "--local-mean", d.local_mean, "local_mean",
+      "Scale the filtered colour (and the colour history the a-trous tap feeds) toward the temporal "
+      "result's local mean of luminance over about K x K pixels (energy and contrast the a-trous filter loses; opt-in, "
+      "K near a sixteenth of the image's height: 5 at 64x64, 65 at 1080p with --antilag 8; 0: off)");
 }
 
 std::optional<ImageSize> parse_size(std::string_view text) {

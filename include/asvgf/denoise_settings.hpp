@@ -71,16 +71,17 @@ struct DenoiseSettings {
   float specular_sigma_l = 0.0f;
   float specular_alpha = 0.0f;
   // The local-mean correction's window k (odd; 0: off, the paper's filter): the filtered colour
-  // scaled toward the temporal result's k x k local mean of luminance, where that mean is known
+  // scaled toward the temporal result's local mean of luminance over about k x k pixels (exactly up
+  // to k 15; above, a box of blocks read bilinearly, 72 pixels wide at k 65), where that mean is known
   // better than its difference from the filtered one's, and the colour history the a-trous tap
   // feeds scaled toward it always (else the filter's loss feeds back through the history). It gives
   // back energy the a-trous gather drops at bright pixels and local contrast it blurs (one signal;
   // the specular chain of --specular-split is not corrected). Measured at 32-256 px only: on the
   // static room 24-44% less error and the energy within 0.6% (k 5 at 64x64, 17 at 256x256; k near
   // a sixteenth of the image's height), more flicker at small k; at 1080p k 65 (with antilag 8)
-  // 22-32% less error on every built-in scene but `many`. Opt-in for its cost (0.26 ms a frame at
-  // 1080p on an H100) and a small k's flicker on still scenes (docs/quality.md, "Energy: a
-  // correction of the displayed frame's local mean").
+  // 22-32% less error on every built-in scene but `many`. Opt-in for its cost at 1080p on an H100
+  // and a small k's flicker on still scenes (docs/quality.md, "Energy: a correction of the
+  // displayed frame's local mean" and "The box over blocks").
   int local_mean = 0;
 };
 

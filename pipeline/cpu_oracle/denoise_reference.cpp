@@ -397,27 +397,50 @@ CompositeResult composite(const ImageD& illumination, const ImageD& albedo, doub
   return out;
 }
 
-ImageD local_mean(const ImageD& temporal, const ImageD& filtered, int k, bool gated) {
-  const int w = filtered.width, h = filtered.height, radius = (k - 1) / 2;
+ImageD local_mean(const ImageD& temporal, const ImageD& filtered, int block, int radius, bool gated) {
+  const int w = filtered.width, h = filtered.height;
+  const int bw = (w + block - 1) / block, bh = (h + block - 1) / block;
   const auto lum = [](const ImageD& img, int x, int y) {
     return luminance(img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2));
   };
+  // Per block: the sums of the temporal luminance, the filtered one, the temporal one squared, and
+  // the pixels inside the image.
+  ImageD sums(bw, bh, 4);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double t = lum(temporal, x, y);
+      const double terms[4] = {t, lum(filtered, x, y), t * t, 1.0};
+      for (int c = 0; c < 4; ++c) sums.at(x / block, y / block, c) += terms[c];
+    }
+  ImageD means(bw, bh, 3);
+  for (int by = 0; by < bh; ++by)
+    for (int bx = 0; bx < bw; ++bx) {
+      double total[4] = {0, 0, 0, 0};
+      for (int qy = std::max(by - radius, 0); qy <= std::min(by + radius, bh - 1); ++qy)
+        for (int qx = std::max(bx - radius, 0); qx <= std::min(bx + radius, bw - 1); ++qx)
+          for (int c = 0; c < 4; ++c) total[c] += sums.at(qx, qy, c);
+      for (int c = 0; c < 3; ++c) means.at(bx, by, c) = total[c] / total[3];
+    }
+  // The gate's standard error counts the window's full pixel count also where it is clamped (as the shader).
+  const double window = double(2 * radius + 1) * block;
   ImageD out(w, h, 4);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      double sum_t = 0, sum_f = 0, sum_t2 = 0;
-      int n = 0;
-      for (int qy = std::max(y - radius, 0); qy <= std::min(y + radius, h - 1); ++qy)
-        for (int qx = std::max(x - radius, 0); qx <= std::min(x + radius, w - 1); ++qx) {
-          const double t = lum(temporal, qx, qy);
-          sum_t += t, sum_f += lum(filtered, qx, qy), sum_t2 += t * t, ++n;
-        }
-      const double mean_t = sum_t / n, mean_f = sum_f / n, mean_t2 = sum_t2 / n;
-      // The gate's standard error counts k^2 pixels also where the window is clamped (as the shader).
-      const double d2 = (mean_t - mean_f) * (mean_t - mean_f);
-      const double se2 = std::max(mean_t2 - mean_t * mean_t, 0.0) / (double(k) * k);
+      const double ux = std::clamp((x + 0.5) / block - 0.5, 0.0, double(bw - 1));
+      const double uy = std::clamp((y + 0.5) / block - 0.5, 0.0, double(bh - 1));
+      const int x0 = int(std::floor(ux)), y0 = int(std::floor(uy));
+      const int x1 = std::min(x0 + 1, bw - 1), y1 = std::min(y0 + 1, bh - 1);
+      const double fx = ux - x0, fy = uy - y0;
+      double m[3];
+      for (int c = 0; c < 3; ++c) {
+        const double top = means.at(x0, y0, c) * (1 - fx) + means.at(x1, y0, c) * fx;
+        const double bottom = means.at(x0, y1, c) * (1 - fx) + means.at(x1, y1, c) * fx;
+        m[c] = top * (1 - fy) + bottom * fy;
+      }
+      const double d2 = (m[0] - m[1]) * (m[0] - m[1]);
+      const double se2 = std::max(m[2] - m[0] * m[0], 0.0) / (window * window);
       const double g = !gated ? 1.0 : d2 + se2 > 0 ? d2 / (d2 + se2) : 0.0;
-      const double scale = mean_f > 1e-6 ? 1 + g * (mean_t / mean_f - 1) : 1.0;
+      const double scale = m[1] > 1e-6 ? 1 + g * (m[0] / m[1] - 1) : 1.0;
       for (int c = 0; c < 3; ++c) out.at(x, y, c) = filtered.at(x, y, c) * scale;
       out.at(x, y, 3) = filtered.at(x, y, 3);
     }

@@ -99,8 +99,11 @@ struct CompositeResult {
 // composite.comp; tonemap 0: clamp, 1: ACES (Narkowicz).
 CompositeResult composite(const ImageD& illumination, const ImageD& albedo, double exposure, int tonemap);
 
-// local_mean.comp: the filtered colour (alpha kept) scaled toward the temporal result's k x k local
-// mean of luminance (windows clamped at the image's edges), by the gate or by the plain ratio.
-ImageD local_mean(const ImageD& temporal, const ImageD& filtered, int k, bool gated);
+// local_mean.comp: the filtered colour (alpha kept) scaled toward the temporal result's local mean
+// of luminance, by the gate or by the plain ratio. The mean: sums over blocks of `block` pixels, a
+// box of (2 radius + 1)^2 blocks around each block (clamped to the image, weighted by the pixels in
+// it), read between the four nearest blocks' centres bilinearly; block 1 is a plain box of
+// 2 radius + 1 pixels a side.
+ImageD local_mean(const ImageD& temporal, const ImageD& filtered, int block, int radius, bool gated);
 
 }  // namespace asvgf::reference

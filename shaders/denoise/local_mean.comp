@@ -1,127 +1,124 @@
 // local_mean.comp: the local-mean correction (DenoiseSettings::local_mean, opt-in): scales the
-// filtered colour toward the temporal result's k x k local mean of luminance. The a-trous
-// gather, normalised per pixel, loses energy where a bright pixel's neighbours are darker and takes
-// local contrast everywhere; the temporal result holds neither loss, and its k x k mean is far less
-// noisy than its pixels (docs/quality.md, "Energy: a correction of the displayed frame's local
-// mean"). The scale is shrunk toward 1 where the box mean of the temporal result is not known
-// better than its difference from the filtered one's: 1 + g (ratio - 1), g = d^2 / (d^2 + se^2), d
-// the difference of the means, se^2 the box's spatial variance of the temporal luminance over k^2
-// (its standard error if the pixels' noise were independent); measured offline, the gate had 7-20%
-// less error than the plain ratio at 64-256 px, keeping the energy bias within about 1%. Two
-// passes, a box separated: ROWS writes each pixel's row means of both luminances and of the
-// temporal one squared (window clamped at the image's edges), the other averages them down the
-// column and scales. The row pass reads its workgroup's row and its apron once into shared memory and
-// sums each window there (reading every tap from the images cost 0.65 ms a frame at k 33 and
-// 1080p: docs/quality.md); the column pass slides a running sum down a strip of kStrip rows an
-// invocation, two row reads an output whatever k is, and starts each strip's sum afresh so that the
-// sum's rounding does not build up (docs/quality.md, "The column pass as a running sum").
+// filtered colour toward the temporal result's local mean of luminance over a window about k pixels
+// wide. The a-trous gather, normalised per pixel, loses energy where a bright pixel's neighbours are
+// darker and takes local contrast everywhere; the temporal result holds neither loss, and its local
+// mean is far less noisy than its pixels (docs/quality.md, "Energy: a correction of the displayed
+// frame's local mean"). The scale is shrunk toward 1 where the box mean of the temporal result is
+// not known better than its difference from the filtered one's: 1 + g (ratio - 1), g = d^2 / (d^2 +
+// se^2), d the difference of the means, se^2 the box's spatial variance of the temporal luminance
+// over the window's pixel count (its standard error if the pixels' noise were independent).
+// The window is a box of (2 radius + 1)^2 blocks of block x block pixels (local_mean_blocks in
+// denoiser/passes/local_mean.hpp: blocks of 1 pixel up to k 15, so that small windows are exact, and
+// about 9 blocks a side above), read between the four nearest blocks' boxes bilinearly. Three passes:
+// BLOCKS sums each block's three terms (both luminances and the temporal one squared) and pixel
+// count, BOX sums them over each block's window of blocks (clamped to the image), the last
+// interpolates and scales. Two k-wide separable passes over every pixel cost 0.26 ms at 1080p and k
+// 65; the block passes touch each pixel once (docs/quality.md, "The box over blocks").
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
 #include "common/color.glsl"
 #include "common/compute.glsl"
 
-#ifdef ROWS
-// The largest radius (k 255) sizes the tile: 382 entries, under the 16 KB of shared memory WebGPU
-// and OpenGL ES guarantee (three floats an entry).
-const int kMaxRadius = 127;
-const int kGroupX = 128;
-layout(local_size_x = kGroupX, local_size_y = 1) in;
-const int kTileEntries = kGroupX + 2 * kMaxRadius;  // one row and its apron
-#else
-const int kStrip = 16;  // rows an invocation writes (the pass dispatches ceil(height / kStrip) rows of invocations)
-layout(local_size_x = 64, local_size_y = 1) in;
-#endif
+layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform Params {
   uint width;
   uint height;
-  int radius;  // (k - 1) / 2
-  uint gated;  // 0: the plain ratio (the tapped history's correction, whose bias would accumulate)
+  int radius;   // in blocks
+  uint gated;   // 0: the plain ratio (the tapped history's correction, whose bias would accumulate)
+  int block;    // pixels a block's side: 1, 2, 4 or 8
+  uint blocks_x;
+  uint blocks_y;
+  float window;  // (2 radius + 1) block: the window's side in pixels, for the gate's pixel count
 } params;
-#ifdef ROWS
+#ifdef BLOCKS
 layout(set = 0, binding = 1) uniform texture2D temporal;  // the temporal pass's result
 layout(set = 0, binding = 2) uniform texture2D filtered;  // the last a-trous iteration's
-// x: temporal, y: filtered, z: temporal squared
-layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D row_means;
+// x: temporal, y: filtered, z: temporal squared (sums), w: pixels
+layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D block_sums;
+#elif defined(BOX)
+layout(set = 0, binding = 3) uniform texture2D block_sums;
+// x, y, z: the window's means of the three terms
+layout(set = 0, binding = 4, rgba32f) writeonly uniform image2D box_means;
 #else
-layout(set = 0, binding = 1) uniform texture2D row_means;
 layout(set = 0, binding = 2) uniform texture2D filtered;
-layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D corrected;
+layout(set = 0, binding = 4) uniform texture2D box_means;
+layout(set = 0, binding = 5, rgba16f) writeonly uniform image2D corrected;
 #endif
 
-#ifdef ROWS
-// The three sums' terms of the tile's pixels (0 outside the image, where no window reaches).
-shared float tile_t[kTileEntries];
-shared float tile_f[kTileEntries];
-shared float tile_t2[kTileEntries];
-
-// One row: entry i is pixel (x0 - radius + i, y).
-void load_tile(ivec2 origin) {
-  const int length = kGroupX + 2 * params.radius;
-  for (int i = int(gl_LocalInvocationIndex); i < length; i += kGroupX) {
-    const ivec2 q = ivec2(origin.x - params.radius + i, origin.y);
-    vec3 terms = vec3(0.0);
-    if (q.x >= 0 && inside(q, params.width, params.height)) {
-      const float t = luminance(texelFetch(temporal, q, 0).rgb);
-      terms = vec3(t, luminance(texelFetch(filtered, q, 0).rgb), t * t);
-    }
-    tile_t[i] = terms.x;
-    tile_f[i] = terms.y;
-    tile_t2[i] = terms.z;
-  }
-}
-
-// The window's mean of the three terms, its pixels clamped to the image.
-vec3 window_mean(ivec2 p, ivec2 origin) {
-  const int lo = max(p.x - params.radius, 0), hi = min(p.x + params.radius, int(params.width) - 1);
-  const int first = lo - (origin.x - params.radius);
-  vec3 sum = vec3(0.0);
-  for (int i = first; i <= first + hi - lo; ++i) sum += vec3(tile_t[i], tile_f[i], tile_t2[i]);
-  return sum / float(hi - lo + 1);
-}
+#ifdef BLOCKS
+// The workgroup's 8x8 pixels' terms; each block row is summed by its first invocation, then the
+// rows by the block's first: 2 block adds in series instead of block^2 (one invocation summing all
+// 64 of a block of 8 took 0.055 ms at 1080p).
+shared vec4 terms[64];
+shared vec4 row_sums[64];
 
 // No return in main: one puts the barrier inside the loop construct that inlining makes of it
 // (suspected of stalling NVIDIA's OpenGL SPIR-V path: docs/performance.md).
 void main() {
-  const ivec2 origin = ivec2(gl_WorkGroupID.xy) * ivec2(kGroupX, 1);
-  load_tile(origin);
+  const ivec2 p = invocation_pixel();
+  vec4 t = vec4(0.0);
+  if (inside(p, params.width, params.height)) {
+    const float lt = luminance(texelFetch(temporal, p, 0).rgb);
+    t = vec4(lt, luminance(texelFetch(filtered, p, 0).rgb), lt * lt, 1.0);
+  }
+  const ivec2 l = ivec2(gl_LocalInvocationID.xy);
+  terms[l.y * 8 + l.x] = t;
   barrier();
-  ivec2 p = invocation_pixel();
-  if (inside(p, params.width, params.height)) imageStore(row_means, p, vec4(window_mean(p, origin), 0.0));
+  const int b = params.block;
+  if (l.x % b == 0) {
+    vec4 sum = vec4(0.0);
+    for (int x = 0; x < b; ++x) sum += terms[l.y * 8 + l.x + x];
+    row_sums[l.y * 8 + l.x] = sum;
+  }
+  barrier();
+  const ivec2 q = p / b;  // this pixel's block
+  if (l.x % b == 0 && l.y % b == 0 && q.x < int(params.blocks_x) && q.y < int(params.blocks_y)) {
+    vec4 sum = vec4(0.0);
+    for (int y = 0; y < b; ++y) sum += row_sums[(l.y + y) * 8 + l.x];
+    imageStore(block_sums, q, sum);
+  }
+}
+#elif defined(BOX)
+void main() {
+  const ivec2 q = invocation_pixel();
+  if (inside(q, params.blocks_x, params.blocks_y)) {
+    const ivec2 lo = max(q - params.radius, ivec2(0));
+    const ivec2 hi = min(q + params.radius, ivec2(params.blocks_x, params.blocks_y) - 1);
+    vec4 sum = vec4(0.0);
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) sum += texelFetch(block_sums, ivec2(x, y), 0);
+    imageStore(box_means, q, vec4(sum.xyz / sum.w, 0.0));
+  }
 }
 #else
-vec3 row_mean(int x, int y) { return texelFetch(row_means, ivec2(x, y), 0).xyz; }
+vec3 box_mean(int x, int y) { return texelFetch(box_means, ivec2(x, y), 0).xyz; }
 
-// The correction at p from its window's means (x: temporal, y: filtered, z: temporal squared).
-void correct(ivec2 p, vec3 mean) {
-  float k = float(2 * params.radius + 1);
-  float d2 = (mean.x - mean.y) * (mean.x - mean.y);
-  float se2 = max(mean.z - mean.x * mean.x, 0.0) / (k * k);
-  float g = params.gated == 0u ? 1.0 : d2 + se2 > 0.0 ? d2 / (d2 + se2) : 0.0;
-  // Nothing filtered to scale (a black neighbourhood): left as it is.
-  float scale = mean.y > 1e-6 ? 1.0 + g * (mean.x / mean.y - 1.0) : 1.0;
-  vec4 f = texelFetch(filtered, p, 0);
-  imageStore(corrected, p, round_to_half(clamp_fp16(vec4(f.rgb * scale, f.a))));
+// The window's means at p: the four nearest blocks' boxes, bilinearly (block centres at
+// (i + 0.5) block), clamped to the blocks' grid. With blocks of 1 pixel, p's own box exactly.
+vec3 window_mean(ivec2 p) {
+  const vec2 last = vec2(params.blocks_x, params.blocks_y) - 1.0;
+  const vec2 u = clamp((vec2(p) + 0.5) / float(params.block) - 0.5, vec2(0.0), last);
+  const ivec2 i0 = ivec2(floor(u));
+  const ivec2 i1 = min(i0 + 1, ivec2(last));
+  const vec2 f = u - vec2(i0);
+  const vec3 top = mix(box_mean(i0.x, i0.y), box_mean(i1.x, i0.y), f.x);
+  const vec3 bottom = mix(box_mean(i0.x, i1.y), box_mean(i1.x, i1.y), f.x);
+  return mix(top, bottom, f.y);
 }
 
-// Column x, rows [y0, y0 + kStrip): the first window summed, then each next one by the row that
-// enters it and the row that leaves it (windows clamped to the image).
 void main() {
-  const int x = int(gl_GlobalInvocationID.x);
-  const int y0 = int(gl_GlobalInvocationID.y) * kStrip;
-  const int last = int(params.height) - 1;
-  if (x < int(params.width) && y0 <= last) {
-    vec3 sum = vec3(0.0);
-    for (int y = max(y0 - params.radius, 0); y <= min(y0 + params.radius, last); ++y) sum += row_mean(x, y);
-    for (int y = y0; y < min(y0 + kStrip, last + 1); ++y) {
-      if (y > y0) {
-        if (y + params.radius <= last) sum += row_mean(x, y + params.radius);
-        if (y - params.radius - 1 >= 0) sum -= row_mean(x, y - params.radius - 1);
-      }
-      const int count = min(y + params.radius, last) - max(y - params.radius, 0) + 1;
-      correct(ivec2(x, y), sum / float(count));
-    }
+  const ivec2 p = invocation_pixel();
+  if (inside(p, params.width, params.height)) {
+    const vec3 mean = window_mean(p);
+    float d2 = (mean.x - mean.y) * (mean.x - mean.y);
+    float se2 = max(mean.z - mean.x * mean.x, 0.0) / (params.window * params.window);
+    float g = params.gated == 0u ? 1.0 : d2 + se2 > 0.0 ? d2 / (d2 + se2) : 0.0;
+    // Nothing filtered to scale (a black neighbourhood): left as it is.
+    float scale = mean.y > 1e-6 ? 1.0 + g * (mean.x / mean.y - 1.0) : 1.0;
+    vec4 f = texelFetch(filtered, p, 0);
+    imageStore(corrected, p, round_to_half(clamp_fp16(vec4(f.rgb * scale, f.a))));
   }
 }
 #endif

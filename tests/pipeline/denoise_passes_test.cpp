@@ -818,21 +818,22 @@ TEST_CASE(
                                    0, settings));
 }
 
-// The local-mean correction (--local-mean): two passes, a box separated into row means and a column
-// average from shared-memory tiles, against the reference's direct k x k box. Windows larger than
-// the image, clamped at its edges and across workgroups, a black neighbourhood (left as it is), the
-// gate and the plain ratio.
+// The local-mean correction (--local-mean): block sums, a box over blocks and a bilinear read, against
+// the reference's direct sums. Blocks of 1 (k 3, 9: a plain k x k box), 2, 4 and 8 pixels, windows
+// larger than the image, clamped at its edges and across workgroups, a black neighbourhood (left as
+// it is), the gate and the plain ratio.
 TEST_CASE(
-    "denoise passes: the local-mean correction matches the CPU reference (gated and plain, windows clamped at the "
-    "edges and across workgroups, a black neighbourhood left unscaled)") {
+    "denoise passes: the local-mean correction matches the CPU reference (blocks of 1 to 8 pixels, gated and plain, "
+    "windows clamped at the edges and across workgroups, a black neighbourhood left unscaled)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
-  // 23x17: one workgroup's span (128 a row, 32 a column) holds the image; 300x70: windows cross
-  // workgroups in both passes, up to the largest k.
+  // 23x17: partial blocks at the right and bottom edges, a window wider than the image (k 65);
+  // 300x70: windows cross workgroups, blocks of 2 (k 17), 4 (k 33) and 8 (k 255).
   struct Case {
     int w, h, k;
   };
-  for (const Case c : {Case{23, 17, 3}, Case{23, 17, 9}, Case{23, 17, 65}, Case{300, 70, 33}, Case{300, 70, 255}}) {
+  for (const Case c :
+       {Case{23, 17, 3}, Case{23, 17, 9}, Case{23, 17, 65}, Case{300, 70, 17}, Case{300, 70, 33}, Case{300, 70, 255}}) {
     for (const bool gated : {true, false}) {
       const int w = c.w, h = c.h, k = c.k;
       CAPTURE(w);
@@ -856,7 +857,10 @@ TEST_CASE(
       ImageD got;
       harness.readback(g, corrected, &got);
       harness.run(g);
-      const ImageD want = ref::local_mean(quantize(temporal, F::RGBA16F), quantize(filtered, F::RGBA16F), k, gated);
+      const passes::LocalMeanBlocks blocks = passes::local_mean_blocks(k);
+      if (k < 16) CHECK(blocks.block == 1);  // small windows are plain k x k boxes
+      const ImageD want = ref::local_mean(quantize(temporal, F::RGBA16F), quantize(filtered, F::RGBA16F), blocks.block,
+                                          blocks.radius, gated);
       DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(4)), "local mean");
       if (k == 3) CHECK(got.at(1, 1, 0) == 0.0);  // inside the black corner: 0 stays 0, no NaN
     }

@@ -1,31 +1,48 @@
 #include "denoiser/passes/local_mean.hpp"
 
-#include "shaders/local_mean.columns.hpp"
-#include "shaders/local_mean.rows.hpp"
+#include <algorithm>
+#include <cmath>
+
+#include "shaders/local_mean.apply.hpp"
+#include "shaders/local_mean.blocks.hpp"
+#include "shaders/local_mean.box.hpp"
 
 namespace asvgf::passes {
 namespace {
 
-// The shaders' uniform block, as the shader tool generated it (the same for both variants).
-using Uniforms = asvgf::shaders::local_mean_rows_uniforms::Params;
+// The shaders' uniform block, as the shader tool generated it (the same for every variant).
+using Uniforms = asvgf::shaders::local_mean_apply_uniforms::Params;
 
 }  // namespace
+
+LocalMeanBlocks local_mean_blocks(int k) {
+  int block = 1;
+  while (block < 8 && k >= 16 * block) block *= 2;  // k 3..15: 1 (exact), 16..31: 2, 32..63: 4, 64..255: 8
+  const int radius = std::max(0, static_cast<int>(std::lround((double(k) / block - 1.0) / 2.0)));
+  return {block, radius};
+}
 
 void add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
                     const DenoiseSettings& s) {
   const auto& decl = graph.resource(r.corrected);
-  const Uniforms u{decl.width, decl.height, (s.local_mean - 1) / 2, r.gated ? 1u : 0u};
-  const graph::ResourceId rows = graph.add_image(r.name + "_rows", decl.width, decl.height, hal::Format::RGBA32F);
-  const hal::ShaderInfo& rows_shader = asvgf::shaders::local_mean_rows;
-  add_compute_pass(graph, r.name + ".rows", rows_shader, pipelines.get<Uniforms>(rows_shader),
-                   {{"temporal", r.temporal}, {"filtered", r.filtered}, {"row_means", rows}}, to_bytes(u),
+  const LocalMeanBlocks b = local_mean_blocks(s.local_mean);
+  const std::uint32_t block = static_cast<std::uint32_t>(b.block);
+  const std::uint32_t bw = (decl.width + block - 1) / block, bh = (decl.height + block - 1) / block;
+  const Uniforms u{decl.width, decl.height, b.radius, r.gated ? 1u : 0u,
+                   b.block,    bw,          bh,       static_cast<float>((2 * b.radius + 1) * b.block)};
+  const graph::ResourceId sums = graph.add_image(r.name + "_block_sums", bw, bh, hal::Format::RGBA32F);
+  const graph::ResourceId means = graph.add_image(r.name + "_box_means", bw, bh, hal::Format::RGBA32F);
+  const hal::ShaderInfo& blocks_shader = asvgf::shaders::local_mean_blocks;
+  add_compute_pass(graph, r.name + ".blocks", blocks_shader, pipelines.get<Uniforms>(blocks_shader),
+                   {{"temporal", r.temporal}, {"filtered", r.filtered}, {"block_sums", sums}}, to_bytes(u),
                    {u.width, u.height, 1});
-  const hal::ShaderInfo& columns_shader = asvgf::shaders::local_mean_columns;
-  // An invocation a strip of rows of one column (local_mean.comp, kStrip).
-  constexpr std::uint32_t kStrip = 16;
-  add_compute_pass(graph, r.name, columns_shader, pipelines.get<Uniforms>(columns_shader),
-                   {{"row_means", rows}, {"filtered", r.filtered}, {"corrected", r.corrected}}, to_bytes(u),
-                   {u.width, (u.height + kStrip - 1) / kStrip, 1});
+  const hal::ShaderInfo& box_shader = asvgf::shaders::local_mean_box;
+  add_compute_pass(graph, r.name + ".box", box_shader, pipelines.get<Uniforms>(box_shader),
+                   {{"block_sums", sums}, {"box_means", means}}, to_bytes(u), {bw, bh, 1});
+  const hal::ShaderInfo& apply_shader = asvgf::shaders::local_mean_apply;
+  add_compute_pass(graph, r.name, apply_shader, pipelines.get<Uniforms>(apply_shader),
+                   {{"box_means", means}, {"filtered", r.filtered}, {"corrected", r.corrected}}, to_bytes(u),
+                   {u.width, u.height, 1});
 }
 
 }  // namespace asvgf::passes

@@ -1,6 +1,7 @@
 // denoiser/passes/local_mean.hpp: the local-mean correction (shaders/denoise/local_mean.comp,
-// DenoiseSettings::local_mean): the filtered colour scaled toward the temporal result's k x k local
-// mean of luminance, where that mean is known better than its difference from the filtered one's.
+// DenoiseSettings::local_mean): the filtered colour scaled toward the temporal result's local mean
+// of luminance over about k x k pixels, where that mean is known better than its difference from the
+// filtered one's.
 #pragma once
 
 #include <string>
@@ -18,8 +19,17 @@ struct LocalMeanResources {
   std::string name = "local_mean";  // of the passes: the displayed colour's, or the tapped history's
   bool gated = true;                // false: the plain ratio (local_mean.comp)
 };
-// Adds "<name>.rows" and "<name>" (settings.local_mean > 0), with the row means in an RGBA32F
-// image of their own (OpenGL ES has no RG32F storage images).
+// How a window of k pixels is built from blocks (local_mean.comp): blocks of `block` pixels a side
+// (1 up to k 15, so that small windows are exact; then 2, 4, 8 with k), `radius` blocks either side of
+// a block, so that the window is (2 radius + 1) block pixels wide (k 65: 72; k 33: 36).
+struct LocalMeanBlocks {
+  int block = 1;
+  int radius = 0;
+};
+LocalMeanBlocks local_mean_blocks(int k);
+
+// Adds "<name>.blocks", "<name>.box" and "<name>" (settings.local_mean > 0), with the block sums and
+// the blocks' box means in RGBA32F images of their own (OpenGL ES has no RG32F storage images).
 void add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
                     const DenoiseSettings& settings);
 
