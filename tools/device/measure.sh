@@ -15,6 +15,7 @@
 #               to the temporal result's for k in $LOCAL_MEAN_K (default 9 17 33 65 129), with and without the gate
 #   local-mean-report  the built correction (--local-mean 17, 33, 65; 33 with tap -1) in
 #               `asvgf report` on light-exit and orbit (flicker, lag, energy), and its passes' time
+#   local-mean-cost  the correction's passes at 1080p (k 65, 33, 17) on every backend and at 4K (k 129)
 #   gl-composite  OpenGL's last a-trous iteration with the composite's stores or its pow edited out
 #   vk-occupancy  Vulkan's path tracer with do-nothing shared memory (tools/device/occupancy_probe.sh
 #               first; every .devbin/asvgf_vkpad<WORDS> it built)
@@ -144,6 +145,19 @@ EOF_PY
         save
       done
       timeout 60 $A bench "${BENCH[@]}" --local-mean 33 2>&1 | grep -E "^(atrous.5|local_mean|composite|denoiser|frame)" ;;
+    local-mean-cost)
+      # The correction's passes (block sums, box, apply; for the history and the displayed colour)
+      # at 1080p for k 65, 33 and 17 on every backend, and at 4K for k 129 (docs/quality.md, "The box
+      # over blocks").
+      for k in 65 33 17; do
+        for backend in vulkan gl gles; do
+          echo "-- k $k $backend: $(timeout 60 $A bench "${BENCH[@]}" --local-mean $k --backend $backend 2>&1 |
+            grep -E '^(local_mean[^ ]*|denoiser|frame) ' | awk '{printf "%s %s  ", $1, $2}')"
+        done
+      done | tee $R/local-mean-cost.txt
+      [ -n "${MEASURE_SIZE:-}" ] && continue  # a dry run: no 4K on lavapipe
+      echo "-- 4K k 129: $(timeout 60 $A bench "${BENCH[@]/#$size/3840x2160}" --local-mean 129 2>&1 |
+        grep -E '^(local_mean[^ ]*|denoiser) ' | awk '{printf "%s %s  ", $1, $2}')" | tee -a $R/local-mean-cost.txt ;;
     gl-composite)
       # issue 37: the composite's share of OpenGL's atrous.5+composite (1.29-1.38x Vulkan's where the
       # middle iterations are 1.13-1.16x): the dumped program timed as it is and with three edits
