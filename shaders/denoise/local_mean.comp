@@ -28,10 +28,10 @@ layout(set = 0, binding = 0) uniform Params {
   int radius;   // in blocks
   uint gated;   // 0: the plain ratio (the tapped history's correction, whose bias would accumulate)
   int block;    // pixels a block's side: 1, 2, 4 or 8
-  uint blocks_x;
-  uint blocks_y;
-  float window;  // (2 radius + 1) block: the window's side in pixels, for the gate's pixel count
 } params;
+
+// The blocks' grid (partial blocks at the right and bottom edges).
+ivec2 blocks() { return (ivec2(params.width, params.height) + params.block - 1) / params.block; }
 #ifdef BLOCKS
 layout(set = 0, binding = 1) uniform texture2D temporal;  // the temporal pass's result
 layout(set = 0, binding = 2) uniform texture2D filtered;  // the last a-trous iteration's
@@ -74,7 +74,7 @@ void main() {
   }
   barrier();
   const ivec2 q = p / b;  // this pixel's block
-  if (l.x % b == 0 && l.y % b == 0 && q.x < int(params.blocks_x) && q.y < int(params.blocks_y)) {
+  if (l.x % b == 0 && l.y % b == 0 && all(lessThan(q, blocks()))) {
     vec4 sum = vec4(0.0);
     for (int y = 0; y < b; ++y) sum += row_sums[(l.y + y) * 8 + l.x];
     imageStore(block_sums, q, sum);
@@ -83,9 +83,9 @@ void main() {
 #elif defined(BOX)
 void main() {
   const ivec2 q = invocation_pixel();
-  if (inside(q, params.blocks_x, params.blocks_y)) {
+  if (all(lessThan(q, blocks()))) {
     const ivec2 lo = max(q - params.radius, ivec2(0));
-    const ivec2 hi = min(q + params.radius, ivec2(params.blocks_x, params.blocks_y) - 1);
+    const ivec2 hi = min(q + params.radius, blocks() - 1);
     vec4 sum = vec4(0.0);
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x) sum += texelFetch(block_sums, ivec2(x, y), 0);
@@ -98,7 +98,7 @@ vec3 box_mean(int x, int y) { return texelFetch(box_means, ivec2(x, y), 0).xyz; 
 // The window's means at p: the four nearest blocks' boxes, bilinearly (block centres at
 // (i + 0.5) block), clamped to the blocks' grid. With blocks of 1 pixel, p's own box exactly.
 vec3 window_mean(ivec2 p) {
-  const vec2 last = vec2(params.blocks_x, params.blocks_y) - 1.0;
+  const vec2 last = vec2(blocks() - 1);
   const vec2 u = clamp((vec2(p) + 0.5) / float(params.block) - 0.5, vec2(0.0), last);
   const ivec2 i0 = ivec2(floor(u));
   const ivec2 i1 = min(i0 + 1, ivec2(last));
@@ -113,7 +113,8 @@ void main() {
   if (inside(p, params.width, params.height)) {
     const vec3 mean = window_mean(p);
     float d2 = (mean.x - mean.y) * (mean.x - mean.y);
-    float se2 = max(mean.z - mean.x * mean.x, 0.0) / (params.window * params.window);
+    const float window = float((2 * params.radius + 1) * params.block);  // the window's side in pixels
+    float se2 = max(mean.z - mean.x * mean.x, 0.0) / (window * window);
     float g = params.gated == 0u ? 1.0 : d2 + se2 > 0.0 ? d2 / (d2 + se2) : 0.0;
     // Nothing filtered to scale (a black neighbourhood): left as it is.
     float scale = mean.y > 1e-6 ? 1.0 + g * (mean.x / mean.y - 1.0) : 1.0;

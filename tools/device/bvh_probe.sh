@@ -19,14 +19,11 @@ for variant in "${variants[@]}"; do
   reset_sources
   python3 - "$leaf" "$cap" <<'PY'
 import sys
+sys.path.insert(0, "tools/device")
+from patch_source import patch_once
 leaf, cap = sys.argv[1], sys.argv[2]
-def patch(path, old, new):
-    s = open(path).read()
-    if s.count(old) != 1:
-        sys.exit("bvh_probe.sh: %s no longer has '%s' once: update the patch" % (path, old.strip()))
-    open(path, "w").write(s.replace(old, new))
-patch("pipeline/renderer/bvh.hpp", "std::uint32_t max_leaf_triangles = 3;", "std::uint32_t max_leaf_triangles = %s;" % leaf)
-patch("pipeline/renderer/bvh.cpp", "if (n <= 4 * options.max_leaf_triangles || best_axis < 0) return make_leaf();",
+patch_once("bvh_probe.sh", "pipeline/renderer/bvh.hpp", "std::uint32_t max_leaf_triangles = 3;", "std::uint32_t max_leaf_triangles = %s;" % leaf)
+patch_once("bvh_probe.sh", "pipeline/renderer/bvh.cpp", "if (n <= 4 * options.max_leaf_triangles || best_axis < 0) return make_leaf();",
       "if (n <= %s * options.max_leaf_triangles || best_axis < 0) return make_leaf();" % cap)
 PY
   cmake --build --preset default > /dev/null

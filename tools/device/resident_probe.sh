@@ -14,14 +14,9 @@ source tools/device/patched_sources.sh
 keep_sources shaders/renderer/pathtrace.comp pipeline/renderer/renderer.cpp pipeline/renderer/frame_graph.cpp
 python3 - <<'PY'
 import sys
-def patch(path, edits):
-    s = open(path).read()
-    for old, new in edits:
-        if s.count(old) != 1:
-            sys.exit("resident_probe.sh: %s no longer has '%s' once: update the patch" % (path, old.strip()))
-        s = s.replace(old, new)
-    open(path, "w").write(s)
-patch("shaders/renderer/pathtrace.comp", [
+sys.path.insert(0, "tools/device")
+from patch_source import patch
+patch("resident_probe.sh", "shaders/renderer/pathtrace.comp", [
     ("buffer RayCounter { uint count; } ray_counter;",
      "buffer RayCounter { uint count; uint resident; uint most_resident; uint pad; } ray_counter;"),
     ("  if (gl_LocalInvocationIndex == 0u) group_rays = 0u;\n",
@@ -31,10 +26,10 @@ patch("shaders/renderer/pathtrace.comp", [
      "  if (gl_LocalInvocationIndex == 0u && group_rays > 0u) atomicAdd(ray_counter.count, group_rays);\n"
      "  if (gl_LocalInvocationIndex == 0u) atomicAdd(ray_counter.resident, 0xFFFFFFFFu);\n"),
 ])
-patch("pipeline/renderer/frame_graph.cpp", [
+patch("resident_probe.sh", "pipeline/renderer/frame_graph.cpp", [
     ("constexpr std::uint64_t kRayCounterSize = 4;", "constexpr std::uint64_t kRayCounterSize = 16;"),
 ])
-patch("pipeline/renderer/renderer.cpp", [
+patch("resident_probe.sh", "pipeline/renderer/renderer.cpp", [
     ("  std::uint32_t rays = 0;\n"
      "  device_.read_buffer(targets_.ray_counter, 0, std::as_writable_bytes(std::span(&rays, 1)));\n",
      "  std::array<std::uint32_t, 4> counter{};\n"

@@ -14,12 +14,9 @@ source tools/device/patched_sources.sh
 keep_sources hal_vulkan/src/timers.cpp hal_gl/src/device.cpp
 python3 - <<'PY'
 import sys
-def patch(path, old, new):
-    s = open(path).read()
-    if s.count(old) != 1:
-        sys.exit("timer_gaps_probe.sh: %s no longer has '%s' once: update the patch" % (path, old.strip()))
-    open(path, "w").write(s.replace(old, new))
-patch("hal_vulkan/src/timers.cpp",
+sys.path.insert(0, "tools/device")
+from patch_source import patch_once
+patch_once("timer_gaps_probe.sh", "hal_vulkan/src/timers.cpp",
       "    const std::uint64_t ticks = (values[2] - values[0]) & mask;",
       "    std::uint64_t previous_end[2] = {};  // value, available\n"
       "    if (r > 0 && t.submitted[r - 1] &&\n"
@@ -29,7 +26,7 @@ patch("hal_vulkan/src/timers.cpp",
       "        previous_end[1])\n"
       "      values[0] = previous_end[0];\n"
       "    const std::uint64_t ticks = (values[2] - values[0]) & mask;")
-patch("hal_gl/src/device.cpp",
+patch_once("timer_gaps_probe.sh", "hal_gl/src/device.cpp",
       "    if (end >= begin) times[r] = static_cast<double>(end - begin) * 1e-6;",
       "    if (r > 0 && t.written[r - 1]) {\n"
       "      if (es)\n"

@@ -28,8 +28,7 @@ void add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const L
   const LocalMeanBlocks b = local_mean_blocks(s.local_mean);
   const std::uint32_t block = static_cast<std::uint32_t>(b.block);
   const std::uint32_t bw = (decl.width + block - 1) / block, bh = (decl.height + block - 1) / block;
-  const Uniforms u{decl.width, decl.height, b.radius, r.gated ? 1u : 0u,
-                   b.block,    bw,          bh,       static_cast<float>((2 * b.radius + 1) * b.block)};
+  const Uniforms u{decl.width, decl.height, b.radius, r.gated ? 1u : 0u, b.block};
   const graph::ResourceId sums = graph.add_image(r.name + "_block_sums", bw, bh, hal::Format::RGBA32F);
   const graph::ResourceId means = graph.add_image(r.name + "_box_means", bw, bh, hal::Format::RGBA32F);
   const hal::ShaderInfo& blocks_shader = asvgf::shaders::local_mean_blocks;
