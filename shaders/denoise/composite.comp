@@ -1,6 +1,9 @@
 // composite.comp: re-modulates the filtered illumination with the albedo and writes HDR radiance
 // (RGBA32F) and the tonemapped sRGB display image (RGBA8 unorm) (common/composite.glsl). The SPLIT
-// variant adds the filtered specular signal times its own albedo (pathtrace's SPLIT_SPECULAR).
+// variant adds the filtered specular signal times its own albedo (pathtrace's SPLIT_SPECULAR). The
+// LOCAL_MEAN variant applies the displayed colour's local-mean correction first (local_mean.comp's
+// last pass, which then runs only where something reads its image), so that the corrected colour
+// is not written and read back.
 // Where a chain ends in a packed a-trous iteration and has one signal, that iteration composites
 // itself (atrous.comp, COMPOSITE) and this pass does not run.
 #version 460
@@ -16,6 +19,8 @@ layout(set = 0, binding = 0) uniform Params {
   uint height;
   float exposure;  // multiplier applied before the tone curve
   uint tonemap;    // 0: clamp, 1: ACES (Narkowicz)
+  int local_mean_radius;  // LOCAL_MEAN: the correction's window, in blocks (local_mean.comp)
+  int local_mean_block;   // LOCAL_MEAN: pixels a block's side
 } params;
 layout(set = 0, binding = 1) uniform texture2D illumination;
 layout(set = 0, binding = 2) uniform texture2D albedo;
@@ -25,6 +30,11 @@ layout(set = 0, binding = 4, rgba8) writeonly uniform image2D display;
 #ifdef SPLIT
 layout(set = 0, binding = 6) uniform texture2D specular;
 layout(set = 0, binding = 7) uniform texture2D specular_albedo;
+#endif
+#ifdef LOCAL_MEAN
+layout(set = 0, binding = 8) uniform texture2D box_means;  // local_mean.comp's BOX pass
+#define LOCAL_MEAN_READS_BOX_MEANS
+#include "common/local_mean.glsl"
 #endif
 layout(set = 0, binding = 5) buffer Counters {
   uint nan_samples;
@@ -38,5 +48,10 @@ layout(set = 0, binding = 5) buffer Counters {
 void main() {
   ivec2 p = invocation_pixel();
   if (!inside(p, params.width, params.height)) return;
-  composite_pixel(p, texelFetch(illumination, p, 0).rgb);
+  vec4 light = texelFetch(illumination, p, 0);
+#ifdef LOCAL_MEAN
+  const ivec2 size = ivec2(params.width, params.height);
+  light = local_mean_corrected(light, local_mean_scale(p, size, params.local_mean_block, params.local_mean_radius, true));
+#endif
+  composite_pixel(p, light.rgb);
 }

@@ -824,9 +824,11 @@ TEST_CASE(
 // it is), the gate and the plain ratio.
 TEST_CASE(
     "denoise passes: the local-mean correction matches the CPU reference (blocks of 1 to 8 pixels, gated and plain, "
-    "windows clamped at the edges and across workgroups, a black neighbourhood left unscaled)") {
+    "windows clamped at the edges and across workgroups, a black neighbourhood left unscaled), and the same bits from "
+    "another correction's temporal block sums and from the composite's own correction") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
+  passes::SanitizeCounters counters(*device);
   // 23x17: partial blocks at the right and bottom edges, a window wider than the image (k 65);
   // 300x70: windows cross workgroups, blocks of 2 (k 17), 4 (k 33) and 8 (k 255).
   struct Case {
@@ -850,12 +852,29 @@ TEST_CASE(
       GraphHarness harness(*device);
       RenderGraph g;
       const auto corrected = g.add_image("corrected", w, h, F::RGBA16F);
-      passes::add_local_mean(g, pipelines,
-                             {harness.input(g, "temporal", temporal, F::RGBA16F),
-                              harness.input(g, "filtered", filtered, F::RGBA16F), corrected, "local_mean", gated},
-                             settings);
-      ImageD got;
+      const auto temporal_id = harness.input(g, "temporal", temporal, F::RGBA16F);
+      const auto filtered_id = harness.input(g, "filtered", filtered, F::RGBA16F);
+      const passes::LocalMeanImages images =
+          passes::add_local_mean(g, pipelines, {temporal_id, filtered_id, corrected, "local_mean", gated}, settings);
+      // The displayed colour's correction as the denoiser builds it: the temporal terms from the
+      // first correction's block sums (its own temporal input left black, so that reading it would
+      // show), applied by the composite (albedo 1, clamp curve: HDR radiance is the corrected colour).
+      const auto shared = g.add_image("corrected_shared", w, h, F::RGBA16F);
+      const auto black = harness.input(g, "black", ImageD(w, h, 4), F::RGBA16F);
+      const passes::LocalMeanImages second = passes::add_local_mean(
+          g, pipelines, {black, filtered_id, shared, "local_mean.shared", gated, images.block_sums}, settings);
+      ImageD got, got_shared, got_hdr;
+      if (gated) {
+        const auto hdr = g.add_image("hdr", w, h, F::RGBA32F);
+        passes::add_composite(g, pipelines,
+                              {filtered_id, harness.input(g, "albedo", ImageD(w, h, 4, 1.0), F::RGBA16F), hdr,
+                               g.add_image("display", w, h, F::RGBA8Unorm), counters.import(g), std::nullopt,
+                               std::nullopt, second.box_means},
+                              settings);
+        harness.readback(g, hdr, &got_hdr);
+      }
       harness.readback(g, corrected, &got);
+      harness.readback(g, shared, &got_shared);
       harness.run(g);
       const passes::LocalMeanBlocks blocks = passes::local_mean_blocks(k);
       if (k < 16) CHECK(blocks.block == 1);  // small windows are plain k x k boxes
@@ -863,6 +882,10 @@ TEST_CASE(
                                           blocks.radius, gated);
       DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(4)), "local mean");
       if (k == 3) CHECK(got.at(1, 1, 0) == 0.0);  // inside the black corner: 0 stays 0, no NaN
+      // The shared temporal sums and the composite's own correction change nothing: the same bits.
+      const auto exact = [](double) { return 1.0; };
+      CHECK(compare(got_shared, got, 4, exact).worst_error == 0.0);
+      if (gated) CHECK(compare(got_hdr, got, 3, exact).worst_error == 0.0);
     }
   }
 }

@@ -1,7 +1,11 @@
 #include "denoiser/passes/composite.hpp"
 
 #include <cstddef>
+#include <stdexcept>
 
+#include "denoiser/passes/local_mean.hpp"
+
+#include "shaders/composite.local_mean.hpp"
 #include "shaders/composite.one.hpp"
 #include "shaders/composite.split.hpp"
 
@@ -16,9 +20,15 @@ using Uniforms = asvgf::shaders::composite_one_uniforms::Params;
 graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipelines, const CompositeResources& r,
                                  const DenoiseSettings& s) {
   const auto& decl = graph.resource(r.hdr);
-  const Uniforms u{decl.width, decl.height, s.exposure, static_cast<std::uint32_t>(s.tonemap)};
   const bool split = r.specular.has_value();
-  const hal::ShaderInfo& shader = split ? asvgf::shaders::composite_split : asvgf::shaders::composite_one;
+  if (split && r.local_mean_box_means)
+    throw std::invalid_argument("add_composite: the local-mean correction is applied here for one signal only");
+  const LocalMeanBlocks blocks = r.local_mean_box_means ? local_mean_blocks(s.local_mean) : LocalMeanBlocks{};
+  const Uniforms u{decl.width,    decl.height, s.exposure, static_cast<std::uint32_t>(s.tonemap),
+                   blocks.radius, blocks.block};
+  const hal::ShaderInfo& shader = split                    ? asvgf::shaders::composite_split
+                                  : r.local_mean_box_means ? asvgf::shaders::composite_local_mean
+                                                           : asvgf::shaders::composite_one;
   const auto pipeline = pipelines.get<Uniforms>(shader);
   std::vector<Binding> bindings{{"illumination", r.illumination},
                                 {"albedo", r.albedo},
@@ -27,6 +37,7 @@ graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipel
                                 {"counters", r.counters}};
   if (split)
     bindings.insert(bindings.end(), {{"specular", *r.specular}, {"specular_albedo", r.specular_albedo.value()}});
+  if (r.local_mean_box_means) bindings.push_back({"box_means", *r.local_mean_box_means});
   return add_compute_pass(graph, "composite", shader, pipeline, std::move(bindings), to_bytes(u),
                           {u.width, u.height, 1});
 }

@@ -18,8 +18,11 @@ struct CompositeResources {
   graph::ResourceId counters = 0;      // read-written SanitizeCounters buffer: zeroed outputs
   // The filtered specular signal and its albedo, added (pathtrace's split signals).
   std::optional<graph::ResourceId> specular, specular_albedo;
+  // The displayed colour's local-mean correction, applied here (one signal only): the box means
+  // of local_mean.hpp's LocalMeanImages, with settings.local_mean's blocks.
+  std::optional<graph::ResourceId> local_mean_box_means;
 };
-// Adds "composite" (settings.exposure, settings.tonemap).
+// Adds "composite" (settings.exposure, settings.tonemap; settings.local_mean with local_mean_box_means).
 graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipelines, const CompositeResources& r,
                                  const DenoiseSettings& settings);
 

@@ -28,6 +28,9 @@ enum class Filter { None, Temporal, Spatiotemporal };
 struct Chain {
   graph::ResourceId filtered = 0, moments = 0, integrated = 0, variance = 0, color_history = 0;
   bool composited = false;
+  // The tapped history's local-mean correction's block sums, whose temporal terms the displayed
+  // colour's correction reads instead of summing the temporal result again.
+  std::optional<graph::ResourceId> local_mean_sums;
 };
 Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId signal, graph::ResourceId albedo,
                 const std::string& prefix, const GraphDenoiserInputs& in, std::optional<graph::ResourceId> gradient,
@@ -95,8 +98,10 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
                  i, s);
     }
     if (tap && local_mean)
-      add_local_mean(graph, pipelines, {c.integrated, *history, c.color_history, prefix + "local_mean.history", false},
-                     s);
+      c.local_mean_sums =
+          add_local_mean(graph, pipelines,
+                         {c.integrated, *history, c.color_history, prefix + "local_mean.history", false}, s)
+              .block_sums;
     current = next;
   }
   c.filtered = current;
@@ -153,6 +158,10 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
   }
 
   Chain diffuse;
+  // Where the composite applies the displayed colour's local-mean correction itself: the windows'
+  // means, and the uncorrected colour it reads.
+  std::optional<ResourceId> local_mean_box_means;
+  ResourceId composite_input = 0;
   if (filter != Filter::None) {
     // The local-mean correction reads the last iteration's output (s.local_mean, denoiser/passes/local_mean.hpp).
     const bool local_mean = s.local_mean > 0 && filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
@@ -164,8 +173,14 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
     diffuse = add_chain(graph, pipelines, in.illumination, in.albedo, "", in, out.gradient, s, filter, composite,
                         std::nullopt, local_mean);
     if (local_mean) {
+      // The corrected colour's image is declared for what reads it (the tests, the debug views);
+      // with one signal the composite applies the correction itself and nothing else does.
       const ResourceId corrected = graph.add_image("local_mean_corrected", w, h, F::RGBA16F);
-      add_local_mean(graph, pipelines, {diffuse.integrated, diffuse.filtered, corrected}, s);
+      const LocalMeanImages images = add_local_mean(
+          graph, pipelines,
+          {diffuse.integrated, diffuse.filtered, corrected, "local_mean", true, diffuse.local_mean_sums}, s);
+      if (!in.specular) local_mean_box_means = images.box_means;
+      composite_input = diffuse.filtered;
       diffuse.filtered = corrected;
     }
     out.filtered = diffuse.filtered;
@@ -189,8 +204,8 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
 
   if (!diffuse.composited)
     add_composite(graph, pipelines,
-                  {out.filtered, in.albedo, in.hdr, in.display, in.counters, out.specular,
-                   out.specular ? in.specular_albedo : std::nullopt},
+                  {local_mean_box_means ? composite_input : out.filtered, in.albedo, in.hdr, in.display, in.counters,
+                   out.specular, out.specular ? in.specular_albedo : std::nullopt, local_mean_box_means},
                   s);
   return out;
 }

@@ -5,6 +5,7 @@
 
 #include "shaders/local_mean.apply.hpp"
 #include "shaders/local_mean.blocks.hpp"
+#include "shaders/local_mean.blocks_filtered.hpp"
 #include "shaders/local_mean.box.hpp"
 
 namespace asvgf::passes {
@@ -22,8 +23,8 @@ LocalMeanBlocks local_mean_blocks(int k) {
   return {block, radius};
 }
 
-void add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
-                    const DenoiseSettings& s) {
+LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
+                               const DenoiseSettings& s) {
   const auto& decl = graph.resource(r.corrected);
   const LocalMeanBlocks b = local_mean_blocks(s.local_mean);
   const std::uint32_t block = static_cast<std::uint32_t>(b.block);
@@ -31,10 +32,13 @@ void add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const L
   const Uniforms u{decl.width, decl.height, b.radius, r.gated ? 1u : 0u, b.block};
   const graph::ResourceId sums = graph.add_image(r.name + "_block_sums", bw, bh, hal::Format::RGBA32F);
   const graph::ResourceId means = graph.add_image(r.name + "_box_means", bw, bh, hal::Format::RGBA32F);
-  const hal::ShaderInfo& blocks_shader = asvgf::shaders::local_mean_blocks;
+  const hal::ShaderInfo& blocks_shader =
+      r.temporal_sums ? asvgf::shaders::local_mean_blocks_filtered : asvgf::shaders::local_mean_blocks;
   add_compute_pass(graph, r.name + ".blocks", blocks_shader, pipelines.get<Uniforms>(blocks_shader),
-                   {{"temporal", r.temporal}, {"filtered", r.filtered}, {"block_sums", sums}}, to_bytes(u),
-                   {u.width, u.height, 1});
+                   {r.temporal_sums ? Binding{"temporal_sums", *r.temporal_sums} : Binding{"temporal", r.temporal},
+                    {"filtered", r.filtered},
+                    {"block_sums", sums}},
+                   to_bytes(u), {u.width, u.height, 1});
   const hal::ShaderInfo& box_shader = asvgf::shaders::local_mean_box;
   add_compute_pass(graph, r.name + ".box", box_shader, pipelines.get<Uniforms>(box_shader),
                    {{"block_sums", sums}, {"box_means", means}}, to_bytes(u), {bw, bh, 1});
@@ -42,6 +46,7 @@ void add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const L
   add_compute_pass(graph, r.name, apply_shader, pipelines.get<Uniforms>(apply_shader),
                    {{"box_means", means}, {"filtered", r.filtered}, {"corrected", r.corrected}}, to_bytes(u),
                    {u.width, u.height, 1});
+  return {sums, means};
 }
 
 }  // namespace asvgf::passes

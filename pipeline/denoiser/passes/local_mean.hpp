@@ -4,6 +4,7 @@
 // filtered one's.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "asvgf/compute_pass.hpp"
@@ -18,6 +19,10 @@ struct LocalMeanResources {
   graph::ResourceId corrected = 0;  // written: RGBA16F, the filtered colour scaled (alpha kept)
   std::string name = "local_mean";  // of the passes: the displayed colour's, or the tapped history's
   bool gated = true;                // false: the plain ratio (local_mean.comp)
+  // Read where given, instead of the temporal result: the block sums of another correction of the
+  // same k over the same temporal result (its x, z and w are this one's; the history's and the
+  // displayed colour's corrections share them).
+  std::optional<graph::ResourceId> temporal_sums;
 };
 // How a window of k pixels is built from blocks (local_mean.comp): blocks of `block` pixels a side
 // (1 up to k 15, so that small windows are exact; then 2, 4, 8 with k), `radius` blocks either side of
@@ -28,9 +33,16 @@ struct LocalMeanBlocks {
 };
 LocalMeanBlocks local_mean_blocks(int k);
 
-// Adds "<name>.blocks", "<name>.box" and "<name>" (settings.local_mean > 0), with the block sums and
-// the blocks' box means in RGBA32F images of their own (OpenGL ES has no RG32F storage images).
-void add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
-                    const DenoiseSettings& settings);
+// The images a correction declares, one texel a block, RGBA32F (OpenGL ES has no RG32F storage
+// images): the block sums (x: temporal, y: filtered, z: temporal squared, w: pixels) and the
+// blocks' windows' means (the composite's LOCAL_MEAN variant reads them to correct by itself).
+struct LocalMeanImages {
+  graph::ResourceId block_sums = 0;
+  graph::ResourceId box_means = 0;
+};
+// Adds "<name>.blocks", "<name>.box" and "<name>" (settings.local_mean > 0). "<name>" writes
+// `corrected` and, like every pass, runs only where something reads it.
+LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
+                               const DenoiseSettings& settings);
 
 }  // namespace asvgf::passes
