@@ -137,8 +137,9 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
   add_setting_option(
       cmd, "--local-mean", d.local_mean, "local_mean",
       "Scale the filtered colour (and the colour history the a-trous tap feeds) toward the temporal "
-      "result's local mean of luminance over about K x K pixels (energy and contrast the a-trous filter loses; opt-in, "
-      "K near a sixteenth of the image's height: 5 at 64x64, 65 at 1080p with --antilag 8; 0: off)");
+      "result's local mean of luminance over about K x K pixels, giving back energy and contrast the a-trous filter "
+      "loses (-1: by the image's size, an eighth of its smaller side from 9 to 65: 9 at 64x64, 65 from 520 px; 0: "
+      "off, the paper's filter)");
 }
 
 std::optional<ImageSize> parse_size(std::string_view text) {

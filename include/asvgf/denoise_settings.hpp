@@ -12,7 +12,8 @@
 //   history_cap 32: Falcor's SVGF (Q2RTX caps at 256 with alpha_min 0.02, moments alpha 0.01).
 //   specular_atrous_iterations 4: measured on `glossy` at 1080p (Q2RTX 3; docs/performance.md).
 //   specular_sigma_l 0, specular_alpha 0: the diffuse chain's.
-//   local_mean 0: off (the paper's filter; the correction is measured, but costs 0.26 ms at 1080p).
+//   local_mean -1, by the image's size: an eighth of its smaller side, 9 to 65 (measured; see
+//   local_mean_window).
 #pragma once
 
 #include <cstdint>
@@ -70,19 +71,16 @@ struct DenoiseSettings {
   // accumulated harder than the diffuse one without touching it.
   float specular_sigma_l = 0.0f;
   float specular_alpha = 0.0f;
-  // The local-mean correction's window k (odd; 0: off, the paper's filter): the filtered colour
-  // scaled toward the temporal result's local mean of luminance over about k x k pixels (exactly up
-  // to k 15; above, a box of blocks read bilinearly, 72 pixels wide at k 65), where that mean is known
-  // better than its difference from the filtered one's, and the colour history the a-trous tap
-  // feeds scaled toward it always (else the filter's loss feeds back through the history). It gives
-  // back energy the a-trous gather drops at bright pixels and local contrast it blurs (one signal;
-  // the specular chain of --specular-split is not corrected). Measured at 32-256 px only: on the
-  // static room 24-44% less error and the energy within 0.6% (k 5 at 64x64, 17 at 256x256; k near
-  // a sixteenth of the image's height), more flicker at small k; at 1080p k 65 (with antilag 8)
-  // 22-32% less error on every built-in scene but `many`. Opt-in for its cost at 1080p on an H100
-  // and a small k's flicker on still scenes (docs/quality.md, "Energy: a correction of the
-  // displayed frame's local mean" and "The box over blocks").
-  int local_mean = 0;
+  // The local-mean correction's window k (odd 3..255; -1: by the image's size, local_mean_window; 0:
+  // off, the paper's filter): the filtered colour scaled toward the temporal result's local mean of
+  // luminance over about k x k pixels (exactly up to k 15; above, a box of blocks read bilinearly, 72
+  // pixels wide at k 65), where that mean is known better than its difference from the filtered
+  // one's, and the colour history the a-trous tap feeds scaled toward it always (else the filter's
+  // loss feeds back through the history). It gives back the energy the a-trous gather drops at
+  // bright pixels and the local contrast it blurs (one signal; the specular chain of
+  // --specular-split is not corrected): docs/quality.md, "Energy: a correction of the displayed
+  // frame's local mean", "The box over blocks" and "The local mean by the image's size".
+  int local_mean = -1;
 };
 
 // The luminance edge-stopping a width x height image is filtered with: settings.sigma_l, or where it
@@ -93,6 +91,15 @@ struct DenoiseSettings {
 // 12 another 12-19% better than 8 on every built-in scene, lag unchanged; 16 gains a little more but
 // lags on `textured` (docs/quality.md, "sigma_l by the image's size").
 float luminance_sigma(const DenoiseSettings& settings, std::uint32_t width, std::uint32_t height);
+
+// The local-mean correction's window for a width x height image: settings.local_mean, or where it is
+// -1, an eighth of the smaller side rounded up to odd, from 9 to 65 (0: off). A small window puts the
+// temporal result's noise back as flicker, a large one corrects less locally: on the static room at
+// 64x64 k 5 / 9 give 44% / 18% less error than none and 2.6 / 1.55 times its flicker, at 256x256 k 17
+// / 33 24% / 17% less and 1.79 / 1.19 times; at 1080p k 65 14-32% less on every built-in scene but
+// `many` (-1%) with the flicker within 14%, where k 33 doubles it (docs/quality.md, "The local mean
+// by the image's size").
+int local_mean_window(const DenoiseSettings& settings, std::uint32_t width, std::uint32_t height);
 
 // Whether `method` with `settings` reads gradient samples the renderer re-shaded (A-SVGF with
 // GradientSource::Reshaded): the renderer then selects and re-shades them on frames where something moved.

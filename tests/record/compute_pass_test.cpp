@@ -11,7 +11,7 @@
 #include "shaders/accumulate.hpp"
 #include "shaders/atrous.history.hpp"
 #include "shaders/atrous.plain.hpp"
-#include "shaders/composite.one.hpp"
+#include "shaders/pack_surface.hpp"
 #include "shaders/variance.hpp"
 #include "test_shaders.hpp"
 
@@ -97,9 +97,9 @@ TEST_CASE("PipelineCache takes a generated uniform struct for any variant with t
     return "";
   };
   // Another size: named with both shaders.
-  const std::string size = refusal(composite_one_uniforms::Params{}, variance);
-  CHECK(size.find("24 bytes in the shader, 16 in the C++ struct generated from 'composite.one'") != std::string::npos);
+  const std::string size = refusal(pack_surface_uniforms::Params{}, variance);
+  CHECK(size.find("24 bytes in the shader, 16 in the C++ struct generated from 'pack_surface'") != std::string::npos);
   // The same size, another member at the same place.
-  const std::string member = refusal(composite_one_uniforms::Params{}, accumulate);
-  CHECK(member.find("member 2 is 'history_valid' in the shader, 'exposure'") != std::string::npos);
+  const std::string member = refusal(pack_surface_uniforms::Params{}, accumulate);
+  CHECK(member.find("member 2 is 'history_valid' in the shader, 'depth_gradient_given'") != std::string::npos);
 }

@@ -243,7 +243,9 @@ TEST_CASE(
         "atrous.1:image atrous.2:image atrous.3:image atrous.4:image atrous.5:image ");
 }
 
-TEST_CASE("culling: an output nobody reads culls its pass, a still frame culls the gradient passes") {
+TEST_CASE(
+    "culling: an output nobody reads culls its pass, a still frame culls the gradient passes, the composite "
+    "applies the local-mean correction itself") {
   Scene scene;
   graph::GraphRuntime runtime(scene.device);
   frame::FrameGraphBuilder builder(scene.device);
@@ -251,6 +253,23 @@ TEST_CASE("culling: an output nobody reads culls its pass, a still frame culls t
   s.width = 16;
   s.height = 16;
   s.scene_moved = false;
+  {
+    // The default (the local-mean correction on): the corrected colour's own pass writes what only a
+    // reader of the denoiser's outputs wants; the last iteration's output is read by the correction.
+    scene.gpu.update(0);
+    auto compiled = runtime.compile(builder.build(s, scene.gpu, scene.targets(16, 16)));
+    std::map<std::string, std::string> culled;
+    for (const auto& c : compiled.culled) culled[c.name] = c.reason;
+    for (const char* name : {"variance", "local_mean"}) {
+      CAPTURE(name);
+      REQUIRE(culled.count(name) == 1);
+      CHECK(culled[name].find("nothing that contributes") != std::string::npos);
+    }
+    CHECK(culled.count("atrous.5") == 0);
+    CHECK(culled.count("local_mean.blocks") == 0);
+  }
+  // Without it, the paper's filter: the last a-trous iteration composites.
+  s.denoise.local_mean = 0;
   scene.gpu.update(0);
   auto g = builder.build(s, scene.gpu, scene.targets(16, 16));
   auto compiled = runtime.compile(g);
@@ -290,35 +309,39 @@ TEST_CASE("culling: an output nobody reads culls its pass, a still frame culls t
 TEST_CASE(
     "history_tap -1: the temporal pass writes the colour history, no a-trous iteration does, and the frames "
     "run with no report") {
-  for (const int tap : {0, -1}) {
-    CAPTURE(tap);
-    Scene scene;
-    frame::FrameGraphBuilder builder(scene.device);
-    frame::FrameSettings s;
-    s.width = 16;
-    s.height = 16;
-    s.scene_moved = true;
-    s.denoise.history_tap = tap;
-    scene.gpu.update(4);
-    scene.gpu.update(5);
-    const auto g = builder.build(s, scene.gpu, scene.targets(16, 16));
-    std::vector<std::string> writers;
-    bool integrated = false;
-    for (const auto& p : g.passes())
-      for (const auto& a : p.accesses)
-        if (graph::writes(a.use) && !a.history && g.resource(a.resource).name == "color_history")
-          writers.push_back(p.name);
-    for (const auto& r : g.resources()) integrated = integrated || r.name == "integrated";
-    if (tap == -1) {
-      CHECK(writers == std::vector<std::string>{"temporal"});
-      CHECK_FALSE(integrated);  // the temporal result is the history itself
-    } else {
-      CHECK(writers == std::vector<std::string>{"atrous.1"});
-      CHECK(integrated);
+  for (const int tap : {0, -1})
+    for (const int local_mean : {-1, 0}) {  // by the size (on), off
+      CAPTURE(tap);
+      CAPTURE(local_mean);
+      Scene scene;
+      frame::FrameGraphBuilder builder(scene.device);
+      frame::FrameSettings s;
+      s.width = 16;
+      s.height = 16;
+      s.scene_moved = true;
+      s.denoise.history_tap = tap;
+      s.denoise.local_mean = local_mean;
+      scene.gpu.update(4);
+      scene.gpu.update(5);
+      const auto g = builder.build(s, scene.gpu, scene.targets(16, 16));
+      std::vector<std::string> writers;
+      bool integrated = false;
+      for (const auto& p : g.passes())
+        for (const auto& a : p.accesses)
+          if (graph::writes(a.use) && !a.history && g.resource(a.resource).name == "color_history")
+            writers.push_back(p.name);
+      for (const auto& r : g.resources()) integrated = integrated || r.name == "integrated";
+      if (tap == -1) {
+        CHECK(writers == std::vector<std::string>{"temporal"});
+        CHECK_FALSE(integrated);  // the temporal result is the history itself
+      } else {
+        // With the correction the tapped iteration's output is corrected before it becomes the history.
+        CHECK(writers == std::vector<std::string>{local_mean == 0 ? "atrous.1" : "local_mean.history"});
+        CHECK(integrated);
+      }
+      run_frames(scene, s, 3, {}, 4);
+      CHECK_MESSAGE(scene.record.reports().empty(), messages(scene.record));
     }
-    run_frames(scene, s, 3, {}, 4);
-    CHECK_MESSAGE(scene.record.reports().empty(), messages(scene.record));
-  }
 }
 
 TEST_CASE("on a small known graph the derived barriers are exactly the expected ones") {

@@ -49,6 +49,7 @@ TEST_CASE("denoiser settings: the defaults and every range's ends pass the check
       {"specular_atrous_iterations", [](auto& s) { s.specular_atrous_iterations = 0; }},
       {"specular_sigma_l", [](auto& s) { s.specular_sigma_l = 32.0f; }},
       {"specular_alpha", [](auto& s) { s.specular_alpha = 1.0f; }},
+      {"local_mean", [](auto& s) { s.local_mean = 0; }},
       {"local_mean", [](auto& s) { s.local_mean = 3; }},
       {"local_mean", [](auto& s) { s.local_mean = 255; }},
   };
@@ -109,6 +110,7 @@ TEST_CASE(
       {"local_mean", [](auto& s) { s.local_mean = 4; }},
       {"local_mean", [](auto& s) { s.local_mean = 257; }},
       {"local_mean", [](auto& s) { s.local_mean = -5; }},
+      {"local_mean", [](auto& s) { s.local_mean = -2; }},
   };
   for (const auto& c : bad) {
     DenoiseSettings s;
@@ -153,4 +155,23 @@ TEST_CASE("luminance_sigma: a set sigma_l wins, 0 gives 4 up to 256x256, 12 from
   s.sigma_l = 3.0f;
   CHECK(luminance_sigma(s, 1920, 1080) == 3.0f);
   CHECK(luminance_sigma(s, 64, 64) == 3.0f);
+}
+
+TEST_CASE("local_mean_window: a set window wins, 0 is off, -1 gives an eighth of the smaller side, odd, from 9 to 65") {
+  DenoiseSettings s;
+  REQUIRE(s.local_mean == -1);  // the default is the size's
+  CHECK(local_mean_window(s, 1, 1) == 9);
+  CHECK(local_mean_window(s, 48, 48) == 9);
+  CHECK(local_mean_window(s, 64, 64) == 9);
+  CHECK(local_mean_window(s, 128, 128) == 17);
+  CHECK(local_mean_window(s, 256, 256) == 33);
+  CHECK(local_mean_window(s, 1920, 256) == 33);  // by the smaller side
+  CHECK(local_mean_window(s, 512, 512) == 65);
+  CHECK(local_mean_window(s, 1920, 1080) == 65);
+  CHECK(local_mean_window(s, 16384, 16384) == 65);
+  for (std::uint32_t side = 1; side <= 2048; ++side) CHECK(local_mean_window(s, side, side) % 2 == 1);
+  s.local_mean = 0;
+  CHECK(local_mean_window(s, 1920, 1080) == 0);
+  s.local_mean = 5;
+  CHECK(local_mean_window(s, 1920, 1080) == 5);
 }

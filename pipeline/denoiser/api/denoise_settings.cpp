@@ -96,9 +96,10 @@ const std::vector<Rule>& rules() {
       {{"specular_alpha", "--specular-alpha", "[0, 1] (0: alpha's)"},
        [](const auto& s) { return in_closed(s.specular_alpha, 0, 1); },
        [](const auto& s) { return text(s.specular_alpha); }},
-      {{"local_mean", "--local-mean", "0 (off) or odd 3..255"},
+      {{"local_mean", "--local-mean", "-1 (by the image's size), 0 (off) or odd 3..255"},
        [](const auto& s) {
-         return s.local_mean == 0 || (s.local_mean >= 3 && s.local_mean <= 255 && s.local_mean % 2 == 1);
+         return s.local_mean == -1 || s.local_mean == 0 ||
+                (s.local_mean >= 3 && s.local_mean <= 255 && s.local_mean % 2 == 1);
        },
        [](const auto& s) { return std::to_string(s.local_mean); }},
   };
@@ -126,6 +127,12 @@ float luminance_sigma(const DenoiseSettings& settings, std::uint32_t width, std:
   if (settings.sigma_l > 0.0f) return settings.sigma_l;
   const double side = std::sqrt(double(width) * double(height));
   return float(4.0 * std::clamp(side / 256.0, 1.0, 3.0));
+}
+
+int local_mean_window(const DenoiseSettings& settings, std::uint32_t width, std::uint32_t height) {
+  if (settings.local_mean >= 0) return settings.local_mean;
+  const std::uint32_t eighth = (std::min(width, height) + 4) / 8;
+  return static_cast<int>(std::clamp(eighth | 1u, 9u, 65u));
 }
 
 std::string SettingProblem::message() const {

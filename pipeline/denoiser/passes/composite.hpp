@@ -19,7 +19,7 @@ struct CompositeResources {
   // The filtered specular signal and its albedo, added (pathtrace's split signals).
   std::optional<graph::ResourceId> specular, specular_albedo;
   // The displayed colour's local-mean correction, applied here (one signal only): the box means
-  // of local_mean.hpp's LocalMeanImages, with settings.local_mean's blocks.
+  // of local_mean.hpp's LocalMeanImages, with local_mean_window(settings, ...)'s blocks.
   std::optional<graph::ResourceId> local_mean_box_means;
 };
 // Adds "composite" (settings.exposure, settings.tonemap; settings.local_mean with local_mean_box_means).

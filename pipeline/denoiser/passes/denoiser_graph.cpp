@@ -164,7 +164,7 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
   ResourceId composite_input = 0;
   if (filter != Filter::None) {
     // The local-mean correction reads the last iteration's output (s.local_mean, denoiser/passes/local_mean.hpp).
-    const bool local_mean = s.local_mean > 0 && filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
+    const bool local_mean = local_mean_window(s, w, h) > 0 && filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
     // One signal: its last packed a-trous iteration composites (but not what is corrected after it).
     const std::optional<CompositeResources> composite =
         in.specular || local_mean

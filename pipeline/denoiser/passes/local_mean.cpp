@@ -26,7 +26,7 @@ LocalMeanBlocks local_mean_blocks(int k) {
 LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
                                const DenoiseSettings& s) {
   const auto& decl = graph.resource(r.corrected);
-  const LocalMeanBlocks b = local_mean_blocks(s.local_mean);
+  const LocalMeanBlocks b = local_mean_blocks(local_mean_window(s, decl.width, decl.height));
   const std::uint32_t block = static_cast<std::uint32_t>(b.block);
   const std::uint32_t bw = (decl.width + block - 1) / block, bh = (decl.height + block - 1) / block;
   const Uniforms u{decl.width, decl.height, b.radius, r.gated ? 1u : 0u, b.block};

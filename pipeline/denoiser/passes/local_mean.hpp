@@ -40,7 +40,7 @@ struct LocalMeanImages {
   graph::ResourceId block_sums = 0;
   graph::ResourceId box_means = 0;
 };
-// Adds "<name>.blocks", "<name>.box" and "<name>" (settings.local_mean > 0). "<name>" writes
+// Adds "<name>.blocks", "<name>.box" and "<name>" (for local_mean_window(settings, ...) > 0). "<name>" writes
 // `corrected` and, like every pass, runs only where something reads it.
 LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
                                const DenoiseSettings& settings);
