@@ -138,8 +138,8 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
       cmd, "--local-mean", d.local_mean, "local_mean",
       "Scale the filtered colour (and the colour history the a-trous tap feeds) toward the temporal "
       "result's local mean of luminance over about K x K pixels, giving back energy and contrast the a-trous filter "
-      "loses (-1: by the image's size, an eighth of its smaller side from 9 to 65: 9 at 64x64, 65 from 520 px; 0: "
-      "off, the paper's filter)");
+      "loses (-1: by the image's size, a sixteenth of its smaller side, odd, from 5: 5 at 64x64, 17 at 256x256, 69 at "
+      "1080p; 0: off, the paper's filter)");
 }
 
 std::optional<ImageSize> parse_size(std::string_view text) {

@@ -12,8 +12,8 @@
 //   history_cap 32: Falcor's SVGF (Q2RTX caps at 256 with alpha_min 0.02, moments alpha 0.01).
 //   specular_atrous_iterations 4: measured on `glossy` at 1080p (Q2RTX 3; docs/performance.md).
 //   specular_sigma_l 0, specular_alpha 0: the diffuse chain's.
-//   local_mean -1, by the image's size: an eighth of its smaller side, 9 to 65 (measured; see
-//   local_mean_window).
+//   local_mean -1, by the image's size: a sixteenth of its smaller side, odd, 5 to 255 (measured;
+//   see local_mean_window).
 #pragma once
 
 #include <cstdint>
@@ -93,12 +93,14 @@ struct DenoiseSettings {
 float luminance_sigma(const DenoiseSettings& settings, std::uint32_t width, std::uint32_t height);
 
 // The local-mean correction's window for a width x height image: settings.local_mean, or where it is
-// -1, an eighth of the smaller side rounded up to odd, from 9 to 65 (0: off). A small window puts the
-// temporal result's noise back as flicker, a large one corrects less locally: on the static room at
-// 64x64 k 5 / 9 give 44% / 18% less error than none and 2.6 / 1.55 times its flicker, at 256x256 k 17
-// / 33 24% / 17% less and 1.79 / 1.19 times; at 1080p k 65 14-32% less on every built-in scene but
-// `many` (-1%) with the flicker within 14%, where k 33 doubles it (docs/quality.md, "The local mean
-// by the image's size").
+// -1, a sixteenth of the smaller side rounded up to odd, from 5 to 255 (0: off). The bias it corrects
+// follows the filter's footprint in pixels, and a small window puts the temporal result's noise back:
+// at 64x64 (lavapipe, light-exit) k 5 has 8-40% less error than none on every built-in scene, k 9
+// gains less and is 8% worse on `glossy`, k 13-17 worse everywhere; on the static room k 5 / 9 give
+// 44% / 18% less error with 2.6 / 1.55 times the flicker; at 256x256 k 17 / 33 24% / 17% less, 1.79
+// / 1.19 times the flicker; at 1080p k 65 (an H100) 14-32% less on every built-in scene but `many`
+// (-1%), the flicker within 14%, where k 33 has more error and twice the flicker (docs/quality.md,
+// "The local mean by the image's size").
 int local_mean_window(const DenoiseSettings& settings, std::uint32_t width, std::uint32_t height);
 
 // Whether `method` with `settings` reads gradient samples the renderer re-shaded (A-SVGF with

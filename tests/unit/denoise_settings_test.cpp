@@ -10,6 +10,7 @@
 #include <string>
 
 #include "asvgf/denoise_settings.hpp"
+#include "denoiser/passes/local_mean.hpp"
 
 using namespace asvgf;
 
@@ -157,19 +158,26 @@ TEST_CASE("luminance_sigma: a set sigma_l wins, 0 gives 4 up to 256x256, 12 from
   CHECK(luminance_sigma(s, 64, 64) == 3.0f);
 }
 
-TEST_CASE("local_mean_window: a set window wins, 0 is off, -1 gives an eighth of the smaller side, odd, from 9 to 65") {
+TEST_CASE(
+    "local_mean_window: a set window wins, 0 is off, -1 gives a sixteenth of the smaller side, odd, from 5 to 255") {
   DenoiseSettings s;
   REQUIRE(s.local_mean == -1);  // the default is the size's
-  CHECK(local_mean_window(s, 1, 1) == 9);
-  CHECK(local_mean_window(s, 48, 48) == 9);
-  CHECK(local_mean_window(s, 64, 64) == 9);
-  CHECK(local_mean_window(s, 128, 128) == 17);
-  CHECK(local_mean_window(s, 256, 256) == 33);
-  CHECK(local_mean_window(s, 1920, 256) == 33);  // by the smaller side
-  CHECK(local_mean_window(s, 512, 512) == 65);
-  CHECK(local_mean_window(s, 1920, 1080) == 65);
-  CHECK(local_mean_window(s, 16384, 16384) == 65);
-  for (std::uint32_t side = 1; side <= 2048; ++side) CHECK(local_mean_window(s, side, side) % 2 == 1);
+  CHECK(local_mean_window(s, 1, 1) == 5);
+  CHECK(local_mean_window(s, 48, 48) == 5);
+  CHECK(local_mean_window(s, 64, 64) == 5);
+  CHECK(local_mean_window(s, 128, 128) == 9);
+  CHECK(local_mean_window(s, 256, 256) == 17);
+  CHECK(local_mean_window(s, 1920, 256) == 17);  // by the smaller side
+  CHECK(local_mean_window(s, 1280, 720) == 45);
+  CHECK(local_mean_window(s, 1920, 1080) == 69);  // built as k 65 is: 9 blocks of 8, 72 pixels
+  CHECK(passes::local_mean_blocks(69).block == passes::local_mean_blocks(65).block);
+  CHECK(passes::local_mean_blocks(69).radius == passes::local_mean_blocks(65).radius);
+  CHECK(local_mean_window(s, 3840, 2160) == 135);
+  CHECK(local_mean_window(s, 16384, 16384) == 255);
+  for (std::uint32_t side = 1; side <= 8192; ++side) {
+    const int k = local_mean_window(s, side, side);
+    CHECK((k % 2 == 1 && k >= 5 && k <= 255));
+  }
   s.local_mean = 0;
   CHECK(local_mean_window(s, 1920, 1080) == 0);
   s.local_mean = 5;

@@ -131,8 +131,8 @@ float luminance_sigma(const DenoiseSettings& settings, std::uint32_t width, std:
 
 int local_mean_window(const DenoiseSettings& settings, std::uint32_t width, std::uint32_t height) {
   if (settings.local_mean >= 0) return settings.local_mean;
-  const std::uint32_t eighth = (std::min(width, height) + 4) / 8;
-  return static_cast<int>(std::clamp(eighth | 1u, 9u, 65u));
+  const std::uint32_t sixteenth = (std::min(width, height) + 8) / 16;
+  return static_cast<int>(std::clamp(sixteenth | 1u, 5u, 255u));
 }
 
 std::string SettingProblem::message() const {
