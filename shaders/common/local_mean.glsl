@@ -10,6 +10,35 @@
 // The blocks' grid of a size x size image (partial blocks at the right and bottom edges).
 ivec2 local_mean_blocks(ivec2 size, int block) { return (size + block - 1) / block; }
 
+#ifdef LOCAL_MEAN_GROUP_X
+// The block sums of a workgroup of LOCAL_MEAN_GROUP_X x LOCAL_MEAN_GROUP_Y invocations (the includer
+// defines both; blocks of `block` pixels, a power of two dividing both, so that no block crosses
+// workgroups): each block row summed by its first invocation, then the rows by the block's first:
+// 2 x block adds in series, not block^2. Every invocation of the workgroup calls it (barriers);
+// the result is the block's sum where the invocation is its block's first (local_mean_block_first).
+shared vec4 local_mean_terms[LOCAL_MEAN_GROUP_X * LOCAL_MEAN_GROUP_Y];
+shared vec4 local_mean_rows[LOCAL_MEAN_GROUP_X * LOCAL_MEAN_GROUP_Y];
+bool local_mean_block_first(int block) {
+  const ivec2 l = ivec2(gl_LocalInvocationID.xy);
+  return l.x % block == 0 && l.y % block == 0;
+}
+vec4 local_mean_block_sum(vec4 terms, int block) {
+  const ivec2 l = ivec2(gl_LocalInvocationID.xy);
+  local_mean_terms[l.y * LOCAL_MEAN_GROUP_X + l.x] = terms;
+  barrier();
+  if (l.x % block == 0) {
+    vec4 sum = vec4(0.0);
+    for (int x = 0; x < block; ++x) sum += local_mean_terms[l.y * LOCAL_MEAN_GROUP_X + l.x + x];
+    local_mean_rows[l.y * LOCAL_MEAN_GROUP_X + l.x] = sum;
+  }
+  barrier();
+  vec4 sum = vec4(0.0);
+  if (local_mean_block_first(block))
+    for (int y = 0; y < block; ++y) sum += local_mean_rows[(l.y + y) * LOCAL_MEAN_GROUP_X + l.x];
+  return sum;
+}
+#endif
+
 #ifdef LOCAL_MEAN_READS_BOX_MEANS
 
 // The window's means at p: the four nearest blocks' boxes, bilinearly (block centres at

@@ -15,6 +15,11 @@
 // (a one-signal chain's last, packed-in iteration) composites the result (common/composite.glsl),
 // unrounded, instead of writing it to an RGBA16F image for the composite pass: 16 bytes a pixel and
 // a dispatch fewer.
+// LOCAL_MEAN_SUMS (the local-mean correction, common/local_mean.glsl) also sums the result's
+// luminance over blocks of local_mean_block pixels into block_sums: the first packed iteration with
+// the history tap with the temporal result's terms (the history's correction), a packed-in last
+// iteration with them taken from temporal_sums (the displayed colour's), so that no pass reads these
+// images again to sum them (local_mean.comp's BLOCKS does the same where no iteration can).
 // The surface texel carries the centre's depth gradient in 8 bits (common/filter_texel.glsl), so the
 // packed-in iterations read nothing but the two texels.
 #version 460
@@ -32,6 +37,11 @@
 #ifdef FIRST_PACKED
 // 16x8 (the most invocations OpenGL ES guarantees): the tile's apron, where each texel costs a
 // variance estimate, is 0.875 texels a pixel against 1.25 with 8x8.
+const int kGroupX = 16;
+const int kGroupY = 8;
+layout(local_size_x = 16, local_size_y = 8) in;
+#elif defined(PACKED_IN) && defined(LOCAL_MEAN_SUMS)
+// 16x8: the same 16x2 warps as 16x4 below, and whole blocks of 8 rows.
 const int kGroupX = 16;
 const int kGroupY = 8;
 layout(local_size_x = 16, local_size_y = 8) in;
@@ -55,6 +65,7 @@ layout(set = 0, binding = 0) uniform Params {
   float min_history;  // of the variance estimate (first packed iteration)
   float exposure;     // COMPOSITE: multiplier applied before the tone curve
   uint tonemap;       // COMPOSITE: 0 clamp, 1 ACES (Narkowicz)
+  int local_mean_block;  // LOCAL_MEAN_SUMS: pixels a block's side (1, 2, 4 or 8)
 } params;
 #ifdef PACKED_IN
 layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec2 texels[]; } color_in;
@@ -87,6 +98,16 @@ layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D color_out;
 #endif
 #ifdef HISTORY
 layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_history;
+#endif
+#ifdef LOCAL_MEAN_SUMS
+// x: temporal, y: this result's, z: temporal squared (luminance sums), w: pixels
+layout(set = 0, binding = 11, rgba32f) writeonly uniform image2D block_sums;
+#ifdef PACKED_IN
+layout(set = 0, binding = 12) uniform texture2D temporal_sums;  // x, z, w: the history's correction's
+#endif
+#define LOCAL_MEAN_GROUP_X kGroupX
+#define LOCAL_MEAN_GROUP_Y kGroupY
+#include "common/local_mean.glsl"
 #endif
 #ifdef FIRST_PACKED
 layout(set = 0, binding = 5, std430) writeonly buffer SurfaceOut { uvec2 texels[]; } surface;
@@ -157,7 +178,8 @@ float prefiltered_variance(ivec2 p) {
   return v;
 }
 
-void filter_pixel(ivec2 p) {
+// Returns what the fp16 outputs hold.
+vec4 filter_pixel(ivec2 p) {
   // The centre's colour, depth and normal come from where the taps' do, so that a tap on the
   // centre's own surface weighs exactly as much.
   const Tap c = read_tap(p);
@@ -210,6 +232,7 @@ void filter_pixel(ivec2 p) {
 #ifdef HISTORY
   imageStore(color_history, p, stored);
 #endif
+  return stored;
 }
 
 // No return in main: one puts the barrier inside the loop construct that inlining makes of it
@@ -220,5 +243,26 @@ void main() {
   barrier();
 #endif
   ivec2 p = invocation_pixel();
+#ifdef LOCAL_MEAN_SUMS
+  vec4 terms = vec4(0.0);
+  if (inside(p, params.width, params.height)) {
+    terms.y = luminance(filter_pixel(p).rgb);
+#ifdef FIRST_PACKED
+    const float lt = luminance(texelFetch(integrated, p, 0).rgb);
+    terms = vec4(lt, terms.y, lt * lt, 1.0);
+#endif
+  }
+  vec4 sum = local_mean_block_sum(terms, params.local_mean_block);
+  const ivec2 q = p / params.local_mean_block;
+  const ivec2 size = ivec2(params.width, params.height);
+  if (local_mean_block_first(params.local_mean_block) && all(lessThan(q, local_mean_blocks(size, params.local_mean_block)))) {
+#ifdef PACKED_IN
+    const vec4 ts = texelFetch(temporal_sums, q, 0);
+    sum = vec4(ts.x, sum.y, ts.zw);
+#endif
+    imageStore(block_sums, q, sum);
+  }
+#else
   if (inside(p, params.width, params.height)) filter_pixel(p);
+#endif
 }

@@ -49,18 +49,16 @@ layout(set = 0, binding = 4) uniform texture2D box_means;
 layout(set = 0, binding = 5, rgba16f) writeonly uniform image2D corrected;
 #define LOCAL_MEAN_READS_BOX_MEANS
 #endif
+#ifdef BLOCKS
+#define LOCAL_MEAN_GROUP_X 8
+#define LOCAL_MEAN_GROUP_Y 8
+#endif
 #include "common/local_mean.glsl"
 
 ivec2 size() { return ivec2(params.width, params.height); }
 ivec2 blocks() { return local_mean_blocks(size(), params.block); }
 
 #ifdef BLOCKS
-// The workgroup's 8x8 pixels' terms; each block row is summed by its first invocation, then the
-// rows by the block's first: 2 block adds in series instead of block^2 (one invocation summing all
-// 64 of a block of 8 took 0.055 ms at 1080p).
-shared vec4 terms[64];
-shared vec4 row_sums[64];
-
 // No return in main: one puts the barrier inside the loop construct that inlining makes of it
 // (suspected of stalling NVIDIA's OpenGL SPIR-V path: docs/performance.md).
 void main() {
@@ -74,20 +72,9 @@ void main() {
     t = vec4(lt, luminance(texelFetch(filtered, p, 0).rgb), lt * lt, 1.0);
 #endif
   }
-  const ivec2 l = ivec2(gl_LocalInvocationID.xy);
-  terms[l.y * 8 + l.x] = t;
-  barrier();
-  const int b = params.block;
-  if (l.x % b == 0) {
-    vec4 sum = vec4(0.0);
-    for (int x = 0; x < b; ++x) sum += terms[l.y * 8 + l.x + x];
-    row_sums[l.y * 8 + l.x] = sum;
-  }
-  barrier();
-  const ivec2 q = p / b;  // this pixel's block
-  if (l.x % b == 0 && l.y % b == 0 && all(lessThan(q, blocks()))) {
-    vec4 sum = vec4(0.0);
-    for (int y = 0; y < b; ++y) sum += row_sums[(l.y + y) * 8 + l.x];
+  vec4 sum = local_mean_block_sum(t, params.block);
+  const ivec2 q = p / params.block;  // this pixel's block
+  if (local_mean_block_first(params.block) && all(lessThan(q, blocks()))) {
 #ifdef TEMPORAL_SUMS
     const vec4 ts = texelFetch(temporal_sums, q, 0);
     sum = vec4(ts.x, sum.y, ts.zw);

@@ -816,6 +816,17 @@ TEST_CASE(
       std::invalid_argument);
   CHECK_NOTHROW(passes::add_atrous(g, pipelines, {img, dn, packed("fits", 8 * 8 * 8), std::nullopt, "", surface, mom},
                                    0, settings));
+  // The local mean's block sums: from the first packed iteration only with its history tap, and in
+  // blocks of 1, 2, 4 or 8 pixels (whole blocks inside a workgroup).
+  const auto sums = g.add_image("sums", 8, 8, F::RGBA32F), history = g.add_image("history", 8, 8, F::RGBA16F);
+  passes::AtrousResources no_tap{img, dn, packed("no_tap", 8 * 8 * 8), std::nullopt, "", surface, mom};
+  no_tap.local_mean_sums = {sums, std::nullopt, 1};
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, no_tap, 0, settings), std::invalid_argument);
+  passes::AtrousResources block3{img, dn, packed("block3", 8 * 8 * 8), history, "", surface, mom};
+  block3.local_mean_sums = {sums, std::nullopt, 3};
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, block3, 0, settings), std::invalid_argument);
+  block3.local_mean_sums->block = 2;
+  CHECK_NOTHROW(passes::add_atrous(g, pipelines, block3, 0, settings));
 }
 
 // The local-mean correction (--local-mean): block sums, a box over blocks and a bilinear read, against
@@ -886,6 +897,77 @@ TEST_CASE(
       const auto exact = [](double) { return 1.0; };
       CHECK(compare(got_shared, got, 4, exact).worst_error == 0.0);
       if (gated) CHECK(compare(got_hdr, got, 3, exact).worst_error == 0.0);
+    }
+  }
+}
+
+// The local mean's block sums from the a-trous iterations themselves (atrous.hpp's LocalMeanSums):
+// the first packed iteration's with the history tap (the temporal result's terms and its own) and a
+// packed-in last iteration's (its own, the temporal terms from the first's), against the blocks
+// pass over the images those iterations write: the same sums in the same order, bit for bit.
+TEST_CASE(
+    "denoise passes: the a-trous iterations' local-mean block sums are the blocks pass's, bit for bit (blocks of 1 "
+    "to 8 pixels, partial blocks at the edges, several workgroups)") {
+  ValidatedDevice device;
+  passes::PipelineCache pipelines(*device);
+  for (const auto& size : {std::array<int, 2>{37, 21}, std::array<int, 2>{70, 35}}) {
+    for (const int k : {3, 17, 33, 65}) {
+      const int w = size[0], h = size[1];
+      CAPTURE(w);
+      CAPTURE(k);
+      Random r(211u + static_cast<std::uint32_t>(w + k));
+      const ImageD dn = depth_normal_as_stored(random_depth_normal(r, w, h));
+      const ImageD color = random_color(r, w, h, 0, 4, 0.5);
+      const ImageD moments = random_moments(r, w, h);
+      const ImageD albedo = random_color(r, w, h, 0.05, 1, 1);
+      asvgf::DenoiseSettings settings;
+      settings.local_mean = k;
+      const int block = passes::local_mean_blocks(k).block;
+      const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
+      GraphHarness harness(*device);
+      RenderGraph g;
+      const auto dn_in = harness.input(g, "depth_normal", depth_normal_texels(dn), F::RGBA16Uint);
+      const auto integrated = harness.input(g, "integrated", color, F::RGBA16F);
+      const std::uint64_t packed_bytes = std::uint64_t{uw} * uh * 8;
+      const auto surface = g.add_buffer("filter_surface", packed_bytes);
+      const auto first = g.add_buffer("atrous.1", packed_bytes), middle = g.add_buffer("atrous.2", packed_bytes);
+      const auto last = g.add_image("atrous.3", uw, uh, F::RGBA16F);
+      const auto history = g.add_image("color_history", uw, uh, F::RGBA16F, Lifetime::Persistent);
+      const auto history_sums = passes::add_local_mean_sums_image(g, "history", uw, uh, k);
+      const auto display_sums = passes::add_local_mean_sums_image(g, "display", uw, uh, k);
+      passes::AtrousResources a1{integrated,
+                                 dn_in,
+                                 first,
+                                 history,
+                                 "",
+                                 surface,
+                                 passes::VarianceEstimateInputs{harness.input(g, "moments", moments, F::RGBA16F),
+                                                                harness.input(g, "albedo", albedo, F::RGBA16F)}};
+      a1.local_mean_sums = {history_sums, std::nullopt, block};
+      passes::add_atrous(g, pipelines, a1, 0, settings);
+      passes::add_atrous(g, pipelines, {first, dn_in, middle, std::nullopt, "", surface}, 1, settings);
+      passes::AtrousResources a3{middle, dn_in, last, std::nullopt, "", surface};
+      a3.local_mean_sums = {display_sums, history_sums, block};
+      passes::add_atrous(g, pipelines, a3, 2, settings);
+      // The blocks passes over the images the iterations wrote.
+      const auto want_history = passes::add_local_mean(
+          g, pipelines,
+          {integrated, history, g.add_image("corrected.history", uw, uh, F::RGBA16F), "ref.history", false}, settings);
+      const auto want_display = passes::add_local_mean(
+          g, pipelines,
+          {integrated, last, g.add_image("corrected", uw, uh, F::RGBA16F), "ref", true, want_history.block_sums},
+          settings);
+      ImageD got_h, got_d, want_h, want_d;
+      harness.readback(g, history_sums, &got_h);
+      harness.readback(g, display_sums, &got_d);
+      harness.readback(g, want_history.block_sums, &want_h);
+      harness.readback(g, want_display.block_sums, &want_d);
+      harness.run(g);
+      const auto exact = [](double) { return 1.0; };
+      REQUIRE(got_h.width == (w + block - 1) / block);
+      CHECK(compare(got_h, want_h, 4, exact).worst_error == 0.0);
+      CHECK(compare(got_d, want_d, 4, exact).worst_error == 0.0);
+      CHECK(want_h.at(0, 0, 3) == double(std::min(block, h) * std::min(block, w)));  // a whole block's pixels
     }
   }
 }

@@ -40,13 +40,24 @@ struct AtrousResources {
   // named "<prefix>atrous.<iteration + 1>+composite". The illumination it composites is its own
   // result, so `composite->illumination` is not read.
   std::optional<CompositeResources> composite;
+  // The local-mean correction's block sums of this iteration's result (local_mean.hpp), written here
+  // so that no pass reads the result again to sum it: by the first packed iteration with the history
+  // tap, with the temporal result's terms (color_in's), or by a packed-in last iteration, with the
+  // temporal terms taken from `temporal_sums` (the history's block sums of the same blocks).
+  struct LocalMeanSums {
+    graph::ResourceId block_sums = 0;  // written: RGBA32F, one texel a block
+    std::optional<graph::ResourceId> temporal_sums;
+    int block = 1;  // pixels a block's side: 1, 2, 4 or 8
+  };
+  std::optional<LocalMeanSums> local_mean_sums;
 };
 // Adds "<prefix>atrous.<iteration + 1>" with step 2^iteration and the settings' kernel and sigmas.
 // The dispatch covers depth_normal's size. Throws std::invalid_argument for a buffer out from an
 // image in at an iteration other than 0, for colour images of another size or buffers smaller
 // than 8 bytes a pixel, for a packed iteration without `surface`, for the first packed iteration
-// without moments (or moments given to another), and for
-// `composite` on another iteration or with a specular signal.
+// without moments (or moments given to another), for `composite` on another iteration or with a
+// specular signal, and for local_mean_sums anywhere but the first packed iteration with the history
+// tap (without temporal_sums) or a packed-in last one (with them).
 graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
                               int iteration, const DenoiseSettings& settings);
 

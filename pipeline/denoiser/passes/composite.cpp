@@ -23,7 +23,8 @@ graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipel
   const bool split = r.specular.has_value();
   if (split && r.local_mean_box_means)
     throw std::invalid_argument("add_composite: the local-mean correction is applied here for one signal only");
-  const LocalMeanBlocks blocks = r.local_mean_box_means ? local_mean_blocks(local_mean_window(s, decl.width, decl.height)) : LocalMeanBlocks{};
+  const LocalMeanBlocks blocks =
+      r.local_mean_box_means ? local_mean_blocks(local_mean_window(s, decl.width, decl.height)) : LocalMeanBlocks{};
   const Uniforms u{decl.width,    decl.height, s.exposure, static_cast<std::uint32_t>(s.tonemap),
                    blocks.radius, blocks.block};
   const hal::ShaderInfo& shader = split                    ? asvgf::shaders::composite_split

@@ -31,6 +31,8 @@ struct Chain {
   // The tapped history's local-mean correction's block sums, whose temporal terms the displayed
   // colour's correction reads instead of summing the temporal result again.
   std::optional<graph::ResourceId> local_mean_sums;
+  // The displayed colour's block sums, where the last a-trous iteration made them.
+  std::optional<graph::ResourceId> display_sums;
 };
 Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId signal, graph::ResourceId albedo,
                 const std::string& prefix, const GraphDenoiserInputs& in, std::optional<graph::ResourceId> gradient,
@@ -61,6 +63,8 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   ResourceId current = graph.add_image(prefix + "color_variance", w, h, F::RGBA16F);
   c.variance = current;
   add_variance(graph, pipelines, {c.integrated, c.moments, in.depth_normal, current, albedo, prefix}, s);
+  const int k = local_mean ? local_mean_window(s, w, h) : 0;
+  const LocalMeanBlocks blocks = local_mean_blocks(k);
   const std::uint64_t range = pipelines.device().capabilities().max_storage_buffer_range;
   const std::uint64_t max_storage_binding = range ? range : std::uint64_t{1} << 27;  // 0: not known
   std::optional<ResourceId> surface;  // the packed surface texels, once an iteration writes them
@@ -85,6 +89,14 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
              : std::optional(local_mean ? graph.add_image(prefix + "color_history_filtered", w, h, F::RGBA16F)
                                         : c.color_history);
     const bool last_packed = i + 1 == s.atrous_iterations && surface && !packed;
+    // The local mean's block sums from the iteration whose result they sum, where it can (atrous.hpp):
+    // the history's from the first packed iteration, the displayed colour's from a packed-in last one
+    // (with the history's temporal terms). Elsewhere local_mean.hpp's blocks pass sums them.
+    std::optional<AtrousResources::LocalMeanSums> sums;
+    if (local_mean && tap && first_packed)
+      sums = {add_local_mean_sums_image(graph, prefix + "local_mean.history", w, h, k), std::nullopt, blocks.block};
+    else if (local_mean && !tap && last_packed && c.local_mean_sums)
+      sums = {add_local_mean_sums_image(graph, prefix + "local_mean", w, h, k), c.local_mean_sums, blocks.block};
     if (last_packed && composite) {
       // The filtered image is still declared, by an iteration without the history tap that only
       // runs where something reads it (the tests' readbacks): the graph leaves it out otherwise.
@@ -92,16 +104,23 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
       c.composited = true;
       add_atrous(graph, pipelines, {current, in.depth_normal, next, std::nullopt, prefix, surface}, i, s);
     } else {
-      add_atrous(graph, pipelines,
-                 {first_packed ? c.integrated : current, in.depth_normal, next, history, prefix, surface,
-                  first_packed ? std::optional(VarianceEstimateInputs{c.moments, albedo}) : std::nullopt},
-                 i, s);
+      AtrousResources r{first_packed ? c.integrated : current,
+                        in.depth_normal,
+                        next,
+                        history,
+                        prefix,
+                        surface,
+                        first_packed ? std::optional(VarianceEstimateInputs{c.moments, albedo}) : std::nullopt};
+      r.local_mean_sums = sums;
+      add_atrous(graph, pipelines, r, i, s);
     }
-    if (tap && local_mean)
-      c.local_mean_sums =
-          add_local_mean(graph, pipelines,
-                         {c.integrated, *history, c.color_history, prefix + "local_mean.history", false}, s)
-              .block_sums;
+    if (tap && local_mean) {
+      LocalMeanResources r{c.integrated, *history, c.color_history, prefix + "local_mean.history", false};
+      if (sums) r.block_sums = sums->block_sums;
+      c.local_mean_sums = add_local_mean(graph, pipelines, r, s).block_sums;
+    } else if (sums) {
+      c.display_sums = sums->block_sums;
+    }
     current = next;
   }
   c.filtered = current;
@@ -164,7 +183,8 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
   ResourceId composite_input = 0;
   if (filter != Filter::None) {
     // The local-mean correction reads the last iteration's output (s.local_mean, denoiser/passes/local_mean.hpp).
-    const bool local_mean = local_mean_window(s, w, h) > 0 && filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
+    const bool local_mean =
+        local_mean_window(s, w, h) > 0 && filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
     // One signal: its last packed a-trous iteration composites (but not what is corrected after it).
     const std::optional<CompositeResources> composite =
         in.specular || local_mean
@@ -176,9 +196,10 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
       // The corrected colour's image is declared for what reads it (the tests, the debug views);
       // with one signal the composite applies the correction itself and nothing else does.
       const ResourceId corrected = graph.add_image("local_mean_corrected", w, h, F::RGBA16F);
-      const LocalMeanImages images = add_local_mean(
-          graph, pipelines,
-          {diffuse.integrated, diffuse.filtered, corrected, "local_mean", true, diffuse.local_mean_sums}, s);
+      const LocalMeanImages images = add_local_mean(graph, pipelines,
+                                                    {diffuse.integrated, diffuse.filtered, corrected, "local_mean",
+                                                     true, diffuse.local_mean_sums, diffuse.display_sums},
+                                                    s);
       if (!in.specular) local_mean_box_means = images.box_means;
       composite_input = diffuse.filtered;
       diffuse.filtered = corrected;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "shaders/local_mean.apply.hpp"
 #include "shaders/local_mean.blocks.hpp"
@@ -23,22 +25,36 @@ LocalMeanBlocks local_mean_blocks(int k) {
   return {block, radius};
 }
 
+graph::ResourceId add_local_mean_sums_image(graph::RenderGraph& graph, const std::string& name, std::uint32_t width,
+                                            std::uint32_t height, int k) {
+  const std::uint32_t block = static_cast<std::uint32_t>(local_mean_blocks(k).block);
+  return graph.add_image(name + "_block_sums", (width + block - 1) / block, (height + block - 1) / block,
+                         hal::Format::RGBA32F);
+}
+
 LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
                                const DenoiseSettings& s) {
   const auto& decl = graph.resource(r.corrected);
-  const LocalMeanBlocks b = local_mean_blocks(local_mean_window(s, decl.width, decl.height));
-  const std::uint32_t block = static_cast<std::uint32_t>(b.block);
-  const std::uint32_t bw = (decl.width + block - 1) / block, bh = (decl.height + block - 1) / block;
+  const int k = local_mean_window(s, decl.width, decl.height);
+  const LocalMeanBlocks b = local_mean_blocks(k);
   const Uniforms u{decl.width, decl.height, b.radius, r.gated ? 1u : 0u, b.block};
-  const graph::ResourceId sums = graph.add_image(r.name + "_block_sums", bw, bh, hal::Format::RGBA32F);
+  const graph::ResourceId sums =
+      r.block_sums ? *r.block_sums : add_local_mean_sums_image(graph, r.name, decl.width, decl.height, k);
+  const auto& sums_decl = graph.resource(sums);
+  const std::uint32_t bw = sums_decl.width, bh = sums_decl.height;
+  if (bw != (decl.width + u.block - 1) / u.block || bh != (decl.height + u.block - 1) / u.block)
+    throw std::invalid_argument("add_local_mean: '" + sums_decl.name + "' is not the blocks' grid of k " +
+                                std::to_string(k));
   const graph::ResourceId means = graph.add_image(r.name + "_box_means", bw, bh, hal::Format::RGBA32F);
-  const hal::ShaderInfo& blocks_shader =
-      r.temporal_sums ? asvgf::shaders::local_mean_blocks_filtered : asvgf::shaders::local_mean_blocks;
-  add_compute_pass(graph, r.name + ".blocks", blocks_shader, pipelines.get<Uniforms>(blocks_shader),
-                   {r.temporal_sums ? Binding{"temporal_sums", *r.temporal_sums} : Binding{"temporal", r.temporal},
-                    {"filtered", r.filtered},
-                    {"block_sums", sums}},
-                   to_bytes(u), {u.width, u.height, 1});
+  if (!r.block_sums) {
+    const hal::ShaderInfo& blocks_shader =
+        r.temporal_sums ? asvgf::shaders::local_mean_blocks_filtered : asvgf::shaders::local_mean_blocks;
+    add_compute_pass(graph, r.name + ".blocks", blocks_shader, pipelines.get<Uniforms>(blocks_shader),
+                     {r.temporal_sums ? Binding{"temporal_sums", *r.temporal_sums} : Binding{"temporal", r.temporal},
+                      {"filtered", r.filtered},
+                      {"block_sums", sums}},
+                     to_bytes(u), {u.width, u.height, 1});
+  }
   const hal::ShaderInfo& box_shader = asvgf::shaders::local_mean_box;
   add_compute_pass(graph, r.name + ".box", box_shader, pipelines.get<Uniforms>(box_shader),
                    {{"block_sums", sums}, {"box_means", means}}, to_bytes(u), {bw, bh, 1});

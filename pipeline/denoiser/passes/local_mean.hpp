@@ -23,6 +23,9 @@ struct LocalMeanResources {
   // same k over the same temporal result (its x, z and w are this one's; the history's and the
   // displayed colour's corrections share them).
   std::optional<graph::ResourceId> temporal_sums;
+  // Given: the block sums made already (by an a-trous iteration, atrous.hpp's LocalMeanSums, in an
+  // image of add_local_mean_sums_image's): no blocks pass.
+  std::optional<graph::ResourceId> block_sums;
 };
 // How a window of k pixels is built from blocks (local_mean.comp): blocks of `block` pixels a side
 // (1 up to k 15, so that small windows are exact; then 2, 4, 8 with k), `radius` blocks either side of
@@ -40,8 +43,12 @@ struct LocalMeanImages {
   graph::ResourceId block_sums = 0;
   graph::ResourceId box_means = 0;
 };
-// Adds "<name>.blocks", "<name>.box" and "<name>" (for local_mean_window(settings, ...) > 0). "<name>" writes
-// `corrected` and, like every pass, runs only where something reads it.
+// Declares "<name>_block_sums", the block sums' RGBA32F image for a width x height image and window k.
+graph::ResourceId add_local_mean_sums_image(graph::RenderGraph& graph, const std::string& name, std::uint32_t width,
+                                            std::uint32_t height, int k);
+
+// Adds "<name>.blocks" (unless r.block_sums), "<name>.box" and "<name>" (for local_mean_window(settings, ...) > 0).
+// "<name>" writes `corrected` and, like every pass, runs only where something reads it.
 LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
                                const DenoiseSettings& settings);
 
