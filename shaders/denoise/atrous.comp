@@ -20,6 +20,9 @@
 // the history tap with the temporal result's terms (the history's correction), a packed-in last
 // iteration with them taken from temporal_sums (the displayed colour's), so that no pass reads these
 // images again to sum them (local_mean.comp's BLOCKS does the same where no iteration can).
+// CORRECTS_HISTORY (a packed middle iteration after the history tap) writes the colour history: the
+// previous iteration's result corrected toward the temporal result's local mean with the history's
+// box means (local_mean.comp), so that the tapped result is not written to an image and read back.
 // The surface texel carries the centre's depth gradient in 8 bits (common/filter_texel.glsl), so the
 // packed-in iterations read nothing but the two texels.
 #version 460
@@ -65,7 +68,8 @@ layout(set = 0, binding = 0) uniform Params {
   float min_history;  // of the variance estimate (first packed iteration)
   float exposure;     // COMPOSITE: multiplier applied before the tone curve
   uint tonemap;       // COMPOSITE: 0 clamp, 1 ACES (Narkowicz)
-  int local_mean_block;  // LOCAL_MEAN_SUMS: pixels a block's side (1, 2, 4 or 8)
+  int local_mean_block;   // LOCAL_MEAN_SUMS, CORRECTS_HISTORY: pixels a block's side (1, 2, 4 or 8)
+  int local_mean_radius;  // CORRECTS_HISTORY: the correction's window, in blocks
 } params;
 #ifdef PACKED_IN
 layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec2 texels[]; } color_in;
@@ -98,6 +102,12 @@ layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D color_out;
 #endif
 #ifdef HISTORY
 layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_history;
+#endif
+#ifdef CORRECTS_HISTORY
+layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_history;
+layout(set = 0, binding = 13) uniform texture2D box_means;  // the history's correction's (local_mean.comp)
+#define LOCAL_MEAN_READS_BOX_MEANS
+#include "common/local_mean.glsl"
 #endif
 #ifdef LOCAL_MEAN_SUMS
 // x: temporal, y: this result's, z: temporal squared (luminance sums), w: pixels
@@ -231,6 +241,14 @@ vec4 filter_pixel(ivec2 p) {
 #endif
 #ifdef HISTORY
   imageStore(color_history, p, stored);
+#endif
+#ifdef CORRECTS_HISTORY
+  // The previous iteration's result, this one's centre texel, corrected toward the temporal result's
+  // local mean (the plain ratio) is the colour history: local_mean.comp's last pass without the
+  // image that pass would read and write.
+  const float scale =
+      local_mean_scale(p, ivec2(params.width, params.height), params.local_mean_block, params.local_mean_radius, false);
+  imageStore(color_history, p, local_mean_corrected(c.color, scale));
 #endif
   return stored;
 }

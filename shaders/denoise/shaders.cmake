@@ -9,8 +9,9 @@ asvgf_add_shader(variance SOURCE denoise/variance.comp)
 asvgf_add_shader(atrous SOURCE denoise/atrous.comp
                  VARIANTS plain history=HISTORY
                           first=PACKED_OUT first_history=PACKED_OUT,HISTORY
-                          first_history_sums=PACKED_OUT,HISTORY,LOCAL_MEAN_SUMS
+                          first_sums=PACKED_OUT,LOCAL_MEAN_SUMS first_history_sums=PACKED_OUT,HISTORY,LOCAL_MEAN_SUMS
                           middle=PACKED_IN,PACKED_OUT middle_history=PACKED_IN,PACKED_OUT,HISTORY
+                          middle_corrects_history=PACKED_IN,PACKED_OUT,CORRECTS_HISTORY
                           last=PACKED_IN last_history=PACKED_IN,HISTORY last_sums=PACKED_IN,LOCAL_MEAN_SUMS
                           last_composite=PACKED_IN,COMPOSITE last_history_composite=PACKED_IN,HISTORY,COMPOSITE)
 asvgf_add_shader(composite SOURCE denoise/composite.comp VARIANTS one split=SPLIT local_mean=LOCAL_MEAN)

@@ -819,9 +819,16 @@ TEST_CASE(
   // The local mean's block sums: from the first packed iteration only with its history tap, and in
   // blocks of 1, 2, 4 or 8 pixels (whole blocks inside a workgroup).
   const auto sums = g.add_image("sums", 8, 8, F::RGBA32F), history = g.add_image("history", 8, 8, F::RGBA16F);
-  passes::AtrousResources no_tap{img, dn, packed("no_tap", 8 * 8 * 8), std::nullopt, "", surface, mom};
-  no_tap.local_mean_sums = {sums, std::nullopt, 1};
-  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, no_tap, 0, settings), std::invalid_argument);
+  passes::AtrousResources middle{
+      packed("middle_in", 8 * 8 * 8), dn, packed("middle_out", 8 * 8 * 8), std::nullopt, "", surface};
+  middle.local_mean_sums = {sums, std::nullopt, 1};
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, middle, 1, settings), std::invalid_argument);
+  // The history's correction: a packed middle iteration, which writes color_history.
+  middle.local_mean_sums.reset();
+  middle.corrects_history = {g.add_image("box_means", 8, 8, F::RGBA32F), 1, 2};
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, middle, 1, settings), std::invalid_argument);
+  middle.color_history = history;
+  CHECK_NOTHROW(passes::add_atrous(g, pipelines, middle, 1, settings));
   passes::AtrousResources block3{img, dn, packed("block3", 8 * 8 * 8), history, "", surface, mom};
   block3.local_mean_sums = {sums, std::nullopt, 3};
   CHECK_THROWS_AS(passes::add_atrous(g, pipelines, block3, 0, settings), std::invalid_argument);
@@ -904,10 +911,12 @@ TEST_CASE(
 // The local mean's block sums from the a-trous iterations themselves (atrous.hpp's LocalMeanSums):
 // the first packed iteration's with the history tap (the temporal result's terms and its own) and a
 // packed-in last iteration's (its own, the temporal terms from the first's), against the blocks
-// pass over the images those iterations write: the same sums in the same order, bit for bit.
+// pass over the images those iterations write: the same sums in the same order, bit for bit. And the
+// history corrected by the next iteration (HistoryCorrection) against the correction's own pass.
 TEST_CASE(
-    "denoise passes: the a-trous iterations' local-mean block sums are the blocks pass's, bit for bit (blocks of 1 "
-    "to 8 pixels, partial blocks at the edges, several workgroups)") {
+    "denoise passes: the a-trous iterations' local-mean block sums are the blocks pass's and the history they "
+    "correct is the correction pass's, bit for bit (blocks of 1 to 8 pixels, partial blocks at the edges, several "
+    "workgroups)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   for (const auto& size : {std::array<int, 2>{37, 21}, std::array<int, 2>{70, 35}}) {
@@ -945,19 +954,27 @@ TEST_CASE(
                                                                 harness.input(g, "albedo", albedo, F::RGBA16F)}};
       a1.local_mean_sums = {history_sums, std::nullopt, block};
       passes::add_atrous(g, pipelines, a1, 0, settings);
-      passes::add_atrous(g, pipelines, {first, dn_in, middle, std::nullopt, "", surface}, 1, settings);
+      // The second iteration writes the corrected history itself (atrous.hpp's HistoryCorrection),
+      // with the box means of the reference's history correction (below).
+      const auto history_corrected = g.add_image("color_history.corrected", uw, uh, F::RGBA16F);
+      passes::AtrousResources a2{first, dn_in, middle, history_corrected, "", surface};
+      const passes::LocalMeanBlocks lmb = passes::local_mean_blocks(k);
       passes::AtrousResources a3{middle, dn_in, last, std::nullopt, "", surface};
       a3.local_mean_sums = {display_sums, history_sums, block};
-      passes::add_atrous(g, pipelines, a3, 2, settings);
-      // The blocks passes over the images the iterations wrote.
+      // The blocks passes over the images the iterations wrote, and the history's last pass.
+      const auto corrected_history = g.add_image("corrected.history", uw, uh, F::RGBA16F);
       const auto want_history = passes::add_local_mean(
-          g, pipelines,
-          {integrated, history, g.add_image("corrected.history", uw, uh, F::RGBA16F), "ref.history", false}, settings);
+          g, pipelines, {integrated, history, corrected_history, "ref.history", false}, settings);
+      a2.corrects_history = {want_history.box_means, lmb.block, lmb.radius};
+      passes::add_atrous(g, pipelines, a2, 1, settings);
+      passes::add_atrous(g, pipelines, a3, 2, settings);
       const auto want_display = passes::add_local_mean(
           g, pipelines,
           {integrated, last, g.add_image("corrected", uw, uh, F::RGBA16F), "ref", true, want_history.block_sums},
           settings);
-      ImageD got_h, got_d, want_h, want_d;
+      ImageD got_h, got_d, want_h, want_d, got_history, want_history_image;
+      harness.readback(g, history_corrected, &got_history);
+      harness.readback(g, corrected_history, &want_history_image);
       harness.readback(g, history_sums, &got_h);
       harness.readback(g, display_sums, &got_d);
       harness.readback(g, want_history.block_sums, &want_h);
@@ -967,6 +984,7 @@ TEST_CASE(
       REQUIRE(got_h.width == (w + block - 1) / block);
       CHECK(compare(got_h, want_h, 4, exact).worst_error == 0.0);
       CHECK(compare(got_d, want_d, 4, exact).worst_error == 0.0);
+      CHECK(compare(got_history, want_history_image, 4, exact).worst_error == 0.0);
       CHECK(want_h.at(0, 0, 3) == double(std::min(block, h) * std::min(block, w)));  // a whole block's pixels
     }
   }

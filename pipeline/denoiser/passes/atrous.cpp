@@ -9,6 +9,7 @@
 #include "shaders/atrous.first.hpp"
 #include "shaders/atrous.first_history.hpp"
 #include "shaders/atrous.first_history_sums.hpp"
+#include "shaders/atrous.first_sums.hpp"
 #include "shaders/atrous.history.hpp"
 #include "shaders/atrous.last.hpp"
 #include "shaders/atrous.last_composite.hpp"
@@ -16,6 +17,7 @@
 #include "shaders/atrous.last_history_composite.hpp"
 #include "shaders/atrous.last_sums.hpp"
 #include "shaders/atrous.middle.hpp"
+#include "shaders/atrous.middle_corrects_history.hpp"
 #include "shaders/atrous.middle_history.hpp"
 #include "shaders/atrous.plain.hpp"
 
@@ -26,10 +28,12 @@ namespace {
 using Uniforms = asvgf::shaders::atrous_plain_uniforms::Params;
 
 // The variant for the chain position: a storage buffer (the packed filter texels) in or out, the
-// history tap, composite folded in, the local mean's block sums.
-const hal::ShaderInfo& atrous_shader(bool packed_in, bool packed_out, bool history, bool composite, bool sums) {
+// history tap, composite folded in, the local mean's block sums or history correction.
+const hal::ShaderInfo& atrous_shader(bool packed_in, bool packed_out, bool history, bool composite, bool sums,
+                                     bool corrects_history) {
   namespace sh = asvgf::shaders;
-  if (sums) return packed_in ? sh::atrous_last_sums : sh::atrous_first_history_sums;
+  if (corrects_history) return sh::atrous_middle_corrects_history;
+  if (sums) return packed_in ? sh::atrous_last_sums : history ? sh::atrous_first_history_sums : sh::atrous_first_sums;
   if (composite) return history ? sh::atrous_last_history_composite : sh::atrous_last_composite;
   if (packed_in) {
     if (packed_out) return history ? sh::atrous_middle_history : sh::atrous_middle;
@@ -59,17 +63,21 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
         first_packed ? "add_atrous: the first packed iteration estimates the variance: it needs moments and albedo"
                      : "add_atrous: only the first packed iteration reads the variance estimate's moments and albedo");
   if (r.local_mean_sums) {
-    const bool first_with_history = first_packed && r.color_history && !r.local_mean_sums->temporal_sums;
+    const bool first = first_packed && !r.local_mean_sums->temporal_sums;
     const bool last = packed_in && !packed_out && !composite && !r.color_history && r.local_mean_sums->temporal_sums;
-    if (!first_with_history && !last)
+    if (!first && !last)
       throw std::invalid_argument(
-          "add_atrous: the local mean's block sums come from the first packed iteration with the history tap, or "
-          "from a packed-in last iteration with the temporal terms' sums");
+          "add_atrous: the local mean's block sums come from the first packed iteration, or from a packed-in last "
+          "iteration without the history tap with the temporal terms' sums");
     const int b = r.local_mean_sums->block;
     if (b != 1 && b != 2 && b != 4 && b != 8)
       throw std::invalid_argument("add_atrous: the local mean's blocks are 1, 2, 4 or 8 pixels, not " +
                                   std::to_string(b));
   }
+  if (r.corrects_history && !(packed_in && packed_out && r.color_history))
+    throw std::invalid_argument(
+        "add_atrous: only a packed middle iteration corrects the colour history, and it "
+        "needs color_history");
   // Every image and buffer must cover depth_normal's size, over which the pass dispatches.
   std::vector<graph::ResourceId> covering{r.color_in};
   if (composite)
@@ -97,7 +105,10 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
                    s.min_history,
                    s.exposure,
                    static_cast<std::uint32_t>(s.tonemap),
-                   r.local_mean_sums ? r.local_mean_sums->block : 1};
+                   r.local_mean_sums    ? r.local_mean_sums->block
+                   : r.corrects_history ? r.corrects_history->block
+                                        : 1,
+                   r.corrects_history ? r.corrects_history->radius : 0};
   std::vector<Binding> bindings{{first_packed ? "integrated" : "color_in", r.color_in}};
   if (composite)
     bindings.insert(bindings.end(), {{"albedo", r.composite->albedo},
@@ -114,8 +125,9 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
     bindings.push_back({"block_sums", r.local_mean_sums->block_sums});
     if (r.local_mean_sums->temporal_sums) bindings.push_back({"temporal_sums", *r.local_mean_sums->temporal_sums});
   }
-  const hal::ShaderInfo& shader =
-      atrous_shader(packed_in, packed_out, r.color_history.has_value(), composite, r.local_mean_sums.has_value());
+  if (r.corrects_history) bindings.push_back({"box_means", r.corrects_history->box_means});
+  const hal::ShaderInfo& shader = atrous_shader(packed_in, packed_out, r.color_history.has_value(), composite,
+                                                r.local_mean_sums.has_value(), r.corrects_history.has_value());
   const auto pipeline = pipelines.get<Uniforms>(shader);
   const std::string name = r.prefix + "atrous." + std::to_string(iteration + 1) + (composite ? "+composite" : "");
   return add_compute_pass(graph, name, shader, pipeline, std::move(bindings), to_bytes(u), {u.width, u.height, 1});

@@ -50,14 +50,24 @@ struct AtrousResources {
     int block = 1;  // pixels a block's side: 1, 2, 4 or 8
   };
   std::optional<LocalMeanSums> local_mean_sums;
+  // A packed middle iteration after the history tap may write the colour history itself
+  // (color_history): the previous iteration's result, its centre texel, corrected toward the temporal
+  // result's local mean with the history's box means (local_mean.hpp), so that the tapped result is
+  // not written to an image and read back.
+  struct HistoryCorrection {
+    graph::ResourceId box_means = 0;
+    int block = 1, radius = 0;  // local_mean.hpp's LocalMeanBlocks
+  };
+  std::optional<HistoryCorrection> corrects_history;
 };
 // Adds "<prefix>atrous.<iteration + 1>" with step 2^iteration and the settings' kernel and sigmas.
 // The dispatch covers depth_normal's size. Throws std::invalid_argument for a buffer out from an
 // image in at an iteration other than 0, for colour images of another size or buffers smaller
 // than 8 bytes a pixel, for a packed iteration without `surface`, for the first packed iteration
 // without moments (or moments given to another), for `composite` on another iteration or with a
-// specular signal, and for local_mean_sums anywhere but the first packed iteration with the history
-// tap (without temporal_sums) or a packed-in last one (with them).
+// specular signal, for local_mean_sums anywhere but the first packed iteration (without
+// temporal_sums) or a packed-in last one without the history tap (with them), and for
+// corrects_history anywhere but a packed middle iteration with color_history.
 graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
                               int iteration, const DenoiseSettings& settings);
 

@@ -67,7 +67,8 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   const LocalMeanBlocks blocks = local_mean_blocks(k);
   const std::uint64_t range = pipelines.device().capabilities().max_storage_buffer_range;
   const std::uint64_t max_storage_binding = range ? range : std::uint64_t{1} << 27;  // 0: not known
-  std::optional<ResourceId> surface;  // the packed surface texels, once an iteration writes them
+  std::optional<ResourceId> surface;            // the packed surface texels, once an iteration writes them
+  std::optional<ResourceId> history_box_means;  // for the iteration that corrects the history (below)
   for (int i = 0; i < s.atrous_iterations; ++i) {
     // Packed filter texels between the 5x5 kernel's iterations: two loads a tap, no decode
     // (denoiser/passes/atrous.hpp). The 3x3 box's 8 taps gain less than the wider texel costs (measured:
@@ -84,10 +85,15 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
     // uncorrected, the filter's energy loss would feed back through the history into the temporal
     // result that the displayed colour is corrected toward.
     const bool tap = i == s.history_tap;
+    // Where the tapped iteration is the first packed one and the next a packed middle one, that next
+    // iteration writes the corrected history itself (atrous.hpp's HistoryCorrection): the tapped
+    // result goes to no image of its own.
+    const bool history_corrected_next = local_mean && tap && first_packed && i + 2 < s.atrous_iterations;
     const std::optional<ResourceId> history =
-        !tap ? std::nullopt
-             : std::optional(local_mean ? graph.add_image(prefix + "color_history_filtered", w, h, F::RGBA16F)
-                                        : c.color_history);
+        !tap || history_corrected_next
+            ? std::nullopt
+            : std::optional(local_mean ? graph.add_image(prefix + "color_history_filtered", w, h, F::RGBA16F)
+                                       : c.color_history);
     const bool last_packed = i + 1 == s.atrous_iterations && surface && !packed;
     // The local mean's block sums from the iteration whose result they sum, where it can (atrous.hpp):
     // the history's from the first packed iteration, the displayed colour's from a packed-in last one
@@ -112,12 +118,21 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
                         surface,
                         first_packed ? std::optional(VarianceEstimateInputs{c.moments, albedo}) : std::nullopt};
       r.local_mean_sums = sums;
+      if (history_box_means) {
+        r.color_history = c.color_history;
+        r.corrects_history = {*history_box_means, blocks.block, blocks.radius};
+        history_box_means.reset();
+      }
       add_atrous(graph, pipelines, r, i, s);
     }
     if (tap && local_mean) {
-      LocalMeanResources r{c.integrated, *history, c.color_history, prefix + "local_mean.history", false};
+      LocalMeanResources r{c.integrated, history.value_or(c.color_history), c.color_history,
+                           prefix + "local_mean.history", false};
       if (sums) r.block_sums = sums->block_sums;
-      c.local_mean_sums = add_local_mean(graph, pipelines, r, s).block_sums;
+      r.apply_pass = !history_corrected_next;
+      const LocalMeanImages images = add_local_mean(graph, pipelines, r, s);
+      c.local_mean_sums = images.block_sums;
+      if (history_corrected_next) history_box_means = images.box_means;
     } else if (sums) {
       c.display_sums = sums->block_sums;
     }

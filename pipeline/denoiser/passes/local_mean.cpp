@@ -34,7 +34,7 @@ graph::ResourceId add_local_mean_sums_image(graph::RenderGraph& graph, const std
 
 LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
                                const DenoiseSettings& s) {
-  const auto& decl = graph.resource(r.corrected);
+  const auto& decl = graph.resource(r.temporal);  // the size of every image it corrects
   const int k = local_mean_window(s, decl.width, decl.height);
   const LocalMeanBlocks b = local_mean_blocks(k);
   const Uniforms u{decl.width, decl.height, b.radius, r.gated ? 1u : 0u, b.block};
@@ -58,6 +58,7 @@ LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelin
   const hal::ShaderInfo& box_shader = asvgf::shaders::local_mean_box;
   add_compute_pass(graph, r.name + ".box", box_shader, pipelines.get<Uniforms>(box_shader),
                    {{"block_sums", sums}, {"box_means", means}}, to_bytes(u), {bw, bh, 1});
+  if (!r.apply_pass) return {sums, means};
   const hal::ShaderInfo& apply_shader = asvgf::shaders::local_mean_apply;
   add_compute_pass(graph, r.name, apply_shader, pipelines.get<Uniforms>(apply_shader),
                    {{"box_means", means}, {"filtered", r.filtered}, {"corrected", r.corrected}}, to_bytes(u),

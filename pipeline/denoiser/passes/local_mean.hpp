@@ -26,6 +26,9 @@ struct LocalMeanResources {
   // Given: the block sums made already (by an a-trous iteration, atrous.hpp's LocalMeanSums, in an
   // image of add_local_mean_sums_image's): no blocks pass.
   std::optional<graph::ResourceId> block_sums;
+  // false: no "<name>" pass (an a-trous iteration applies the correction: atrous.hpp's
+  // HistoryCorrection); `filtered` and `corrected` are then not read or written.
+  bool apply_pass = true;
 };
 // How a window of k pixels is built from blocks (local_mean.comp): blocks of `block` pixels a side
 // (1 up to k 15, so that small windows are exact; then 2, 4, 8 with k), `radius` blocks either side of
