@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The measurements issues 36, 37 and 39 need on the H200, in one device call (prepare.sh first):
 #   bash tools/device/measure.sh [bench] [glossy] [static] [light-exit] [orbit] [sigma] [local-mean] [local-mean-report]
+#                                [local-mean-cost] [local-mean-default]
 #                                [gl-composite] [vk-occupancy] [ab]
 # (no step: bench glossy static). Each step has a time limit and its results go to
 # $OUT/reports.tgz as soon as it ends, so that a run cut short still returns what it measured.
@@ -16,6 +17,8 @@
 #   local-mean-report  the built correction (--local-mean 17, 33, 65; 33 with tap -1) in
 #               `asvgf report` on light-exit and orbit (flicker, lag, energy), and its passes' time
 #   local-mean-cost  the correction's passes at 1080p (k 65, 33, 17) on every backend and at 4K (k 129)
+#   local-mean-default  the default (the correction on, k by size) against --local-mean 0: the bench twice
+#               each, alternately, Vulkan and OpenGL, 1080p and 4K, then light-exit at 1080p (12 frames)
 #   gl-composite  OpenGL's last a-trous iteration with the composite's stores or its pow edited out
 #   vk-occupancy  Vulkan's path tracer with do-nothing shared memory (tools/device/occupancy_probe.sh
 #               first; every .devbin/asvgf_vkpad<WORDS> it built)
@@ -158,6 +161,24 @@ EOF_PY
       [ -n "${MEASURE_SIZE:-}" ] && continue  # a dry run: no 4K on lavapipe
       echo "-- 4K k 129: $(timeout 60 $A bench "${BENCH[@]/#$size/3840x2160}" --local-mean 129 2>&1 |
         grep -E '^(local_mean[^ ]*|denoiser) ' | awk '{printf "%s %s  ", $1, $2}')" | tee -a $R/local-mean-cost.txt ;;
+    local-mean-default)
+      # issue 39: what the default's correction costs and gives (docs/quality.md, "The local mean by
+      # the image's size"; docs/performance.md's 336.9 B a pixel).
+      for sz in "$size" 3840x2160; do
+        [ -n "${MEASURE_SIZE:-}" ] && [ $sz = 3840x2160 ] && continue  # a dry run: no 4K on lavapipe
+        for backend in vulkan gl; do
+          for round in 1 2; do
+            for lm in -1 0; do
+              echo "-- $sz $backend --local-mean $lm round $round: $(timeout 60 $A bench "${BENCH[@]/#$size/$sz}" \
+                --backend $backend --local-mean $lm 2>&1 | grep -E '^(atrous[^ ]*|local_mean[^ ]*|composite|denoiser|frame) ' |
+                awk '{printf "%s %s  ", $1, $2}')"
+            done
+          done
+        done
+      done | tee $R/local-mean-default.txt
+      save
+      timeout 300 $A report "${HD[@]}" --frames 12 --methods raw --run 'def=asvgf' --run 'off=asvgf --local-mean 0' \
+        --out $R/local-mean-default --quiet 2>&1 | tail -1 ;;
     gl-composite)
       # issue 37: the composite's share of OpenGL's atrous.5+composite (1.29-1.38x Vulkan's where the
       # middle iterations are 1.13-1.16x): the dumped program timed as it is and with three edits

@@ -67,8 +67,11 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   const LocalMeanBlocks blocks = local_mean_blocks(k);
   const std::uint64_t range = pipelines.device().capabilities().max_storage_buffer_range;
   const std::uint64_t max_storage_binding = range ? range : std::uint64_t{1} << 27;  // 0: not known
-  std::optional<ResourceId> surface;            // the packed surface texels, once an iteration writes them
-  std::optional<ResourceId> history_box_means;  // for the iteration that corrects the history (below)
+  std::optional<ResourceId> surface;  // the packed surface texels, once an iteration writes them
+  // The history's correction's box means, for the next iteration, which applies it (below).
+  // (A flag and an id, not an optional: GCC 12 at -O2 warns that the optional may be uninitialized.)
+  bool history_correction_pending = false;
+  ResourceId history_box_means = 0;
   for (int i = 0; i < s.atrous_iterations; ++i) {
     // Packed filter texels between the 5x5 kernel's iterations: two loads a tap, no decode
     // (denoiser/passes/atrous.hpp). The 3x3 box's 8 taps gain less than the wider texel costs (measured:
@@ -118,10 +121,10 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
                         surface,
                         first_packed ? std::optional(VarianceEstimateInputs{c.moments, albedo}) : std::nullopt};
       r.local_mean_sums = sums;
-      if (history_box_means) {
+      if (history_correction_pending) {
         r.color_history = c.color_history;
-        r.corrects_history = {*history_box_means, blocks.block, blocks.radius};
-        history_box_means.reset();
+        r.corrects_history = {history_box_means, blocks.block, blocks.radius};
+        history_correction_pending = false;
       }
       add_atrous(graph, pipelines, r, i, s);
     }
@@ -132,7 +135,10 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
       r.apply_pass = !history_corrected_next;
       const LocalMeanImages images = add_local_mean(graph, pipelines, r, s);
       c.local_mean_sums = images.block_sums;
-      if (history_corrected_next) history_box_means = images.box_means;
+      if (history_corrected_next) {
+        history_correction_pending = true;
+        history_box_means = images.box_means;
+      }
     } else if (sums) {
       c.display_sums = sums->block_sums;
     }
