@@ -34,16 +34,17 @@ graph::ResourceId add_local_mean_sums_image(graph::RenderGraph& graph, const std
 
 LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
                                const DenoiseSettings& s) {
-  const auto& decl = graph.resource(r.temporal);  // the size of every image it corrects
-  const int k = local_mean_window(s, decl.width, decl.height);
+  // Copies, not references: declaring an image may move the graph's resources.
+  const std::uint32_t width = graph.resource(r.temporal).width;  // the size of every image it corrects
+  const std::uint32_t height = graph.resource(r.temporal).height;
+  const int k = local_mean_window(s, width, height);
   const LocalMeanBlocks b = local_mean_blocks(k);
-  const Uniforms u{decl.width, decl.height, b.radius, r.gated ? 1u : 0u, b.block};
+  const Uniforms u{width, height, b.radius, r.gated ? 1u : 0u, b.block};
   const graph::ResourceId sums =
-      r.block_sums ? *r.block_sums : add_local_mean_sums_image(graph, r.name, decl.width, decl.height, k);
-  const auto& sums_decl = graph.resource(sums);
-  const std::uint32_t bw = sums_decl.width, bh = sums_decl.height;
-  if (bw != (decl.width + u.block - 1) / u.block || bh != (decl.height + u.block - 1) / u.block)
-    throw std::invalid_argument("add_local_mean: '" + sums_decl.name + "' is not the blocks' grid of k " +
+      r.block_sums ? *r.block_sums : add_local_mean_sums_image(graph, r.name, width, height, k);
+  const std::uint32_t bw = graph.resource(sums).width, bh = graph.resource(sums).height;
+  if (bw != (width + u.block - 1) / u.block || bh != (height + u.block - 1) / u.block)
+    throw std::invalid_argument("add_local_mean: '" + graph.resource(sums).name + "' is not the blocks' grid of k " +
                                 std::to_string(k));
   const graph::ResourceId means = graph.add_image(r.name + "_box_means", bw, bh, hal::Format::RGBA32F);
   if (!r.block_sums) {
