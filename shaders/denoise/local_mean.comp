@@ -11,9 +11,12 @@
 // BLOCKS sums each block's three terms (both luminances and the temporal one squared) and pixel
 // count (with TEMPORAL_SUMS it takes the temporal terms from another correction's block sums of the
 // same blocks and reads the filtered colour only), BOX sums them over each block's window of blocks
-// (clamped to the image), the last interpolates and scales (or the composite does: composite.comp,
-// LOCAL_MEAN). Two k-wide separable passes over every pixel cost 0.26 ms at 1080p and k 65; the
-// block passes touch each pixel once (docs/quality.md, "The box over blocks").
+// (clamped to the image), the last interpolates and scales. By default the a-trous iterations do the
+// first and last passes' work themselves (atrous.comp, LOCAL_MEAN_SUMS and CORRECTS_HISTORY) and the
+// composite scales the displayed colour (composite.comp, LOCAL_MEAN): these passes run where they
+// cannot (denoiser/passes/denoiser_graph.cpp). Two k-wide separable passes over every pixel cost
+// 0.26 ms at 1080p and k 65; the block passes touch each pixel once (docs/quality.md, "The box over
+// blocks").
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require

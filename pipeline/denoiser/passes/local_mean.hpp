@@ -50,8 +50,9 @@ struct LocalMeanImages {
 graph::ResourceId add_local_mean_sums_image(graph::RenderGraph& graph, const std::string& name, std::uint32_t width,
                                             std::uint32_t height, int k);
 
-// Adds "<name>.blocks" (unless r.block_sums), "<name>.box" and "<name>" (for local_mean_window(settings, ...) > 0).
-// "<name>" writes `corrected` and, like every pass, runs only where something reads it.
+// Adds "<name>.blocks" (unless r.block_sums), "<name>.box" and "<name>" (unless !r.apply_pass), for
+// local_mean_window(settings, ...) > 0. "<name>" writes `corrected` and, like every pass, runs only
+// where something reads it.
 LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
                                const DenoiseSettings& settings);
 
