@@ -20,6 +20,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
+#extension GL_EXT_control_flow_attributes : require
 #include "common/color.glsl"
 #include "common/compute.glsl"
 
