@@ -217,10 +217,12 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
       // The corrected colour's image is declared for what reads it (the tests, the debug views);
       // with one signal the composite applies the correction itself and nothing else does.
       const ResourceId corrected = graph.add_image("local_mean_corrected", w, h, F::RGBA16F);
-      const LocalMeanImages images = add_local_mean(graph, pipelines,
-                                                    {diffuse.integrated, diffuse.filtered, corrected, "local_mean",
-                                                     true, diffuse.local_mean_sums, diffuse.display_sums},
-                                                    s);
+      const LocalMeanImages images =
+          add_local_mean(graph, pipelines,
+                         {diffuse.integrated, diffuse.filtered, corrected, "local_mean", true,
+                          // the temporal terms are in the last iteration's sums where it made them
+                          diffuse.display_sums ? std::nullopt : diffuse.local_mean_sums, diffuse.display_sums},
+                         s);
       if (!in.specular) local_mean_box_means = images.box_means;
       composite_input = diffuse.filtered;
       diffuse.filtered = corrected;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "shaders/local_mean.apply.hpp"
 #include "shaders/local_mean.blocks.hpp"
@@ -16,6 +17,13 @@ namespace {
 // The shaders' uniform block, as the shader tool generated it (the same for every variant).
 using Uniforms = asvgf::shaders::local_mean_apply_uniforms::Params;
 
+// The blocks' grid of a width x height image: partial blocks at the right and bottom edges
+// (common/local_mean.glsl's local_mean_blocks).
+std::pair<std::uint32_t, std::uint32_t> blocks_grid(std::uint32_t width, std::uint32_t height, int k) {
+  const std::uint32_t block = static_cast<std::uint32_t>(local_mean_blocks(k).block);
+  return {(width + block - 1) / block, (height + block - 1) / block};
+}
+
 }  // namespace
 
 LocalMeanBlocks local_mean_blocks(int k) {
@@ -27,9 +35,8 @@ LocalMeanBlocks local_mean_blocks(int k) {
 
 graph::ResourceId add_local_mean_sums_image(graph::RenderGraph& graph, const std::string& name, std::uint32_t width,
                                             std::uint32_t height, int k) {
-  const std::uint32_t block = static_cast<std::uint32_t>(local_mean_blocks(k).block);
-  return graph.add_image(name + "_block_sums", (width + block - 1) / block, (height + block - 1) / block,
-                         hal::Format::RGBA32F);
+  const auto [bw, bh] = blocks_grid(width, height, k);
+  return graph.add_image(name + "_block_sums", bw, bh, hal::Format::RGBA32F);
 }
 
 LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
@@ -42,8 +49,8 @@ LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelin
   const Uniforms u{width, height, b.radius, r.gated ? 1u : 0u, b.block};
   const graph::ResourceId sums =
       r.block_sums ? *r.block_sums : add_local_mean_sums_image(graph, r.name, width, height, k);
-  const std::uint32_t bw = graph.resource(sums).width, bh = graph.resource(sums).height;
-  if (bw != (width + u.block - 1) / u.block || bh != (height + u.block - 1) / u.block)
+  const auto [bw, bh] = blocks_grid(width, height, k);
+  if (graph.resource(sums).width != bw || graph.resource(sums).height != bh)
     throw std::invalid_argument("add_local_mean: '" + graph.resource(sums).name + "' is not the blocks' grid of k " +
                                 std::to_string(k));
   const graph::ResourceId means = graph.add_image(r.name + "_box_means", bw, bh, hal::Format::RGBA32F);
