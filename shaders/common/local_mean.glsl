@@ -20,14 +20,24 @@ ivec2 local_mean_blocks(ivec2 size, int block) { return (size + block - 1) / blo
 // block's sum where the invocation is its block's first (local_mean_block_first). The includer
 // enables GL_EXT_control_flow_attributes.
 const int kLocalMeanMaxBlock = 8;  // DenoiseSettings: blocks of 1, 2, 4 or 8 pixels
+// The includer may give two shared vec4 arrays of at least a workgroup's entries to reuse
+// (LOCAL_MEAN_TERMS, LOCAL_MEAN_ROWS): they are overwritten after a barrier.
+#ifdef LOCAL_MEAN_TERMS
+#define local_mean_terms LOCAL_MEAN_TERMS
+#define local_mean_rows LOCAL_MEAN_ROWS
+#else
 shared vec4 local_mean_terms[LOCAL_MEAN_GROUP_X * LOCAL_MEAN_GROUP_Y];
 shared vec4 local_mean_rows[LOCAL_MEAN_GROUP_X * LOCAL_MEAN_GROUP_Y];
+#endif
 bool local_mean_block_first(int block) {
   const ivec2 l = ivec2(gl_LocalInvocationID.xy);
   return l.x % block == 0 && l.y % block == 0;
 }
 vec4 local_mean_block_sum(vec4 terms, int block) {
   const ivec2 l = ivec2(gl_LocalInvocationID.xy);
+#ifdef LOCAL_MEAN_TERMS
+  barrier();  // every invocation done with what the arrays held
+#endif
   local_mean_terms[l.y * LOCAL_MEAN_GROUP_X + l.x] = terms;
   barrier();
   if (l.x % block == 0) {

@@ -115,9 +115,6 @@ layout(set = 0, binding = 11, rgba32f) writeonly uniform image2D block_sums;
 #ifdef PACKED_IN
 layout(set = 0, binding = 12) uniform texture2D temporal_sums;  // x, z, w: the history's correction's
 #endif
-#define LOCAL_MEAN_GROUP_X kGroupX
-#define LOCAL_MEAN_GROUP_Y kGroupY
-#include "common/local_mean.glsl"
 #endif
 #ifdef FIRST_PACKED
 layout(set = 0, binding = 5, std430) writeonly buffer SurfaceOut { uvec2 texels[]; } surface;
@@ -252,6 +249,18 @@ vec4 filter_pixel(ivec2 p) {
 #endif
   return stored;
 }
+
+#ifdef LOCAL_MEAN_SUMS
+#define LOCAL_MEAN_GROUP_X kGroupX
+#define LOCAL_MEAN_GROUP_Y kGroupY
+#ifdef FIRST_PACKED
+// The block sums in the tile's shared memory, which the filter no longer reads: 4 KB a workgroup
+// more had cost the first iteration 0.035 ms at 1080p on an H100 (docs/performance.md).
+#define LOCAL_MEAN_TERMS tile_color
+#define LOCAL_MEAN_ROWS tile_surface
+#endif
+#include "common/local_mean.glsl"
+#endif
 
 // No return in main: one puts the barrier inside the loop construct that inlining makes of it
 // (suspected of stalling NVIDIA's OpenGL SPIR-V path: docs/performance.md).
