@@ -127,7 +127,7 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
       ->check(CLI::IsMember({"reshaded", "reprojected"}))
       ->capture_default_str();
   add_setting_option(cmd, "--antilag", d.antilag, "antilag",
-                     "A-SVGF: how strongly the temporal gradient shortens the history (paper 1, measured best 4; 0: "
+                     "A-SVGF: how strongly the temporal gradient shortens the history (paper 1, measured best 8; 0: "
                      "constant alpha)");
   add_setting_option(cmd, "--history-cap", d.history_cap, "history_cap", "Maximum history length in frames");
   add_setting_option(

@@ -7,8 +7,8 @@
 //   sigma_l 0, by the image's size: the paper's 4 up to 256x256 pixels, 12 from 768x768 (measured;
 //   see luminance_sigma).
 //   gradient_iterations 3: Q2RTX (a-trous over the gradient at 1/3 resolution).
-//   antilag 4: measured (the paper's is 1; Q2RTX's flt_antilag_hf 1 with a history shortened by
-//   (1 - alpha)^10).
+//   antilag 8: measured with the local-mean correction (the paper's is 1; Q2RTX's flt_antilag_hf 1
+//   with a history shortened by (1 - alpha)^10).
 //   history_cap 32: Falcor's SVGF (Q2RTX caps at 256 with alpha_min 0.02, moments alpha 0.01).
 //   specular_atrous_iterations 4: measured on `glossy` at 1080p (Q2RTX 3; docs/performance.md).
 //   specular_sigma_l 0, specular_alpha 0: the diffuse chain's.
@@ -53,10 +53,13 @@ struct DenoiseSettings {
   GradientSource gradient_source = GradientSource::Reshaded;  // A-SVGF's gradient (see above)
   // A-SVGF's anti-lag strength: lambda = min(1, antilag |delta^| / Delta^), the blend factor's and
   // the history length's response to the temporal gradient (the paper: 1; Q2RTX's flt_antilag_hf).
-  // 4 measured best of 1, 2, 4, 8 at 1080p: the gradient, filtered over strata, dilutes a local
-  // change with the unchanged light around it (docs/quality.md, "Anti-lag strength"). With the
-  // reprojected gradient on noisy light 1 is better: its noise alone then shortens the history.
-  float antilag = 4.0f;
+  // Above 1 because the gradient, filtered over strata, dilutes a local change with the unchanged
+  // light around it (docs/quality.md, "Anti-lag strength"); 8 because the local-mean correction's
+  // history keeps the light the filter used to drain, the light that left included: with it 8 beats
+  // 4 on every built-in case at 1080p and on light-exit at 64x64 (docs/quality.md, "Anti-lag 8 by
+  // default"). With the reprojected gradient on noisy light 1 is better: its noise alone then
+  // shortens the history.
+  float antilag = 8.0f;
   float min_history = 4.0f;         // below this, variance is estimated spatially (SVGF)
   float exposure = 1.0f;            // composite: multiplier before the tone curve
   Tonemap tonemap = Tonemap::Aces;  // composite: ACES fit (Narkowicz 2015)

@@ -57,7 +57,7 @@ ImageD gradient_atrous(const ImageD& gradient_in, const ImageD& depth_normal, co
 struct TemporalParams {
   double alpha = 0.2, moments_alpha = 0.2, history_cap = 32;
   bool history_valid = true;
-  double antilag = 4;  // DenoiseSettings::antilag
+  double antilag = 8;  // DenoiseSettings::antilag
 };
 struct TemporalInputs {
   const ImageD* illumination = nullptr;
