@@ -15,25 +15,30 @@ ivec2 local_mean_blocks(ivec2 size, int block) { return (size + block - 1) / blo
 // defines both; blocks of `block` pixels, a power of two dividing both, so that no block crosses
 // workgroups): each block row summed by its first invocation, then the rows by the block's first:
 // 2 x block adds in series, not block^2, unrolled to the largest block so that a row's loads issue
-// together (rolled, one load a trip, the first iteration's sums cost 0.039 ms at 1080p on an H100:
-// docs/performance.md). Every invocation of the workgroup calls it (barriers); the result is the
+// together (0.004 ms less in the first iteration at 1080p on an H100: docs/performance.md, "The local
+// mean's cost, measured"). Every invocation of the workgroup calls it (barriers); the result is the
 // block's sum where the invocation is its block's first (local_mean_block_first). The includer
 // enables GL_EXT_control_flow_attributes.
 const int kLocalMeanMaxBlock = 8;  // DenoiseSettings: blocks of 1, 2, 4 or 8 pixels
-// The includer may give two shared vec4 arrays of at least a workgroup's entries to reuse
-// (LOCAL_MEAN_TERMS, LOCAL_MEAN_ROWS): they are overwritten after a barrier.
+// The terms summed: vec4, or float where the includer sums one (LOCAL_MEAN_SUM_TYPE), in a quarter
+// of the shared memory. The includer may instead give two shared arrays of that type and at least a
+// workgroup's entries to reuse (LOCAL_MEAN_TERMS, LOCAL_MEAN_ROWS): they are overwritten after a
+// barrier.
+#ifndef LOCAL_MEAN_SUM_TYPE
+#define LOCAL_MEAN_SUM_TYPE vec4
+#endif
 #ifdef LOCAL_MEAN_TERMS
 #define local_mean_terms LOCAL_MEAN_TERMS
 #define local_mean_rows LOCAL_MEAN_ROWS
 #else
-shared vec4 local_mean_terms[LOCAL_MEAN_GROUP_X * LOCAL_MEAN_GROUP_Y];
-shared vec4 local_mean_rows[LOCAL_MEAN_GROUP_X * LOCAL_MEAN_GROUP_Y];
+shared LOCAL_MEAN_SUM_TYPE local_mean_terms[LOCAL_MEAN_GROUP_X * LOCAL_MEAN_GROUP_Y];
+shared LOCAL_MEAN_SUM_TYPE local_mean_rows[LOCAL_MEAN_GROUP_X * LOCAL_MEAN_GROUP_Y];
 #endif
 bool local_mean_block_first(int block) {
   const ivec2 l = ivec2(gl_LocalInvocationID.xy);
   return l.x % block == 0 && l.y % block == 0;
 }
-vec4 local_mean_block_sum(vec4 terms, int block) {
+LOCAL_MEAN_SUM_TYPE local_mean_block_sum(LOCAL_MEAN_SUM_TYPE terms, int block) {
   const ivec2 l = ivec2(gl_LocalInvocationID.xy);
 #ifdef LOCAL_MEAN_TERMS
   barrier();  // every invocation done with what the arrays held
@@ -41,13 +46,13 @@ vec4 local_mean_block_sum(vec4 terms, int block) {
   local_mean_terms[l.y * LOCAL_MEAN_GROUP_X + l.x] = terms;
   barrier();
   if (l.x % block == 0) {
-    vec4 sum = vec4(0.0);
+    LOCAL_MEAN_SUM_TYPE sum = LOCAL_MEAN_SUM_TYPE(0.0);
     [[unroll]] for (int x = 0; x < kLocalMeanMaxBlock; ++x)
       if (x < block) sum += local_mean_terms[l.y * LOCAL_MEAN_GROUP_X + l.x + x];
     local_mean_rows[l.y * LOCAL_MEAN_GROUP_X + l.x] = sum;
   }
   barrier();
-  vec4 sum = vec4(0.0);
+  LOCAL_MEAN_SUM_TYPE sum = LOCAL_MEAN_SUM_TYPE(0.0);
   if (local_mean_block_first(block))
     [[unroll]] for (int y = 0; y < kLocalMeanMaxBlock; ++y)
       if (y < block) sum += local_mean_rows[(l.y + y) * LOCAL_MEAN_GROUP_X + l.x];

@@ -255,9 +255,13 @@ vec4 filter_pixel(ivec2 p) {
 #define LOCAL_MEAN_GROUP_Y kGroupY
 #ifdef FIRST_PACKED
 // The block sums in the tile's shared memory, which the filter no longer reads: 4 KB a workgroup
-// more had cost the first iteration 0.035 ms at 1080p on an H100 (docs/performance.md).
+// more (less L1 beside the shared memory) had cost the first iteration 0.026 ms at 1080p on an H100,
+// 0.035 on OpenGL (docs/performance.md, "The local mean's cost, measured").
 #define LOCAL_MEAN_TERMS tile_color
 #define LOCAL_MEAN_ROWS tile_surface
+#else
+// The last iteration sums its own luminance alone (the temporal terms are the history's sums).
+#define LOCAL_MEAN_SUM_TYPE float
 #endif
 #include "common/local_mean.glsl"
 #endif
@@ -271,23 +275,26 @@ void main() {
 #endif
   ivec2 p = invocation_pixel();
 #ifdef LOCAL_MEAN_SUMS
-  vec4 terms = vec4(0.0);
+  LOCAL_MEAN_SUM_TYPE terms = LOCAL_MEAN_SUM_TYPE(0.0);
   if (inside(p, params.width, params.height)) {
-    terms.y = luminance(filter_pixel(p).rgb);
+    const float l = luminance(filter_pixel(p).rgb);
 #ifdef FIRST_PACKED
     const float lt = luminance(texelFetch(integrated, p, 0).rgb);
-    terms = vec4(lt, terms.y, lt * lt, 1.0);
+    terms = vec4(lt, l, lt * lt, 1.0);
+#else
+    terms = l;
 #endif
   }
-  vec4 sum = local_mean_block_sum(terms, params.local_mean_block);
+  const LOCAL_MEAN_SUM_TYPE sum = local_mean_block_sum(terms, params.local_mean_block);
   const ivec2 q = p / params.local_mean_block;
   const ivec2 size = ivec2(params.width, params.height);
   if (local_mean_block_first(params.local_mean_block) && all(lessThan(q, local_mean_blocks(size, params.local_mean_block)))) {
 #ifdef PACKED_IN
     const vec4 ts = texelFetch(temporal_sums, q, 0);
-    sum = vec4(ts.x, sum.y, ts.zw);
-#endif
+    imageStore(block_sums, q, vec4(ts.x, sum, ts.zw));
+#else
     imageStore(block_sums, q, sum);
+#endif
   }
 #else
   if (inside(p, params.width, params.height)) filter_pixel(p);
