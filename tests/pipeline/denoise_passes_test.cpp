@@ -909,7 +909,7 @@ TEST_CASE(
 }
 
 // The local mean's block sums from the a-trous iterations themselves (atrous.hpp's LocalMeanSums):
-// the first packed iteration's with the history tap (the temporal result's terms and its own) and a
+// the first packed iteration's, with the history tap and without (the temporal result's terms and its own), and a
 // packed-in last iteration's (its own, the temporal terms from the first's), against the blocks
 // pass over the images those iterations write: the same sums in the same order, bit for bit. And the
 // history corrected by the next iteration (HistoryCorrection) against the correction's own pass.
@@ -954,6 +954,15 @@ TEST_CASE(
                                                                 harness.input(g, "albedo", albedo, F::RGBA16F)}};
       a1.local_mean_sums = {history_sums, std::nullopt, block};
       passes::add_atrous(g, pipelines, a1, 0, settings);
+      // The same first iteration without the history tap (the variant the default graph runs, whose
+      // next iteration writes the history): the same sums.
+      passes::AtrousResources a1_untapped = a1;
+      a1_untapped.color_out = g.add_buffer("atrous.1.untapped", packed_bytes);
+      a1_untapped.color_history.reset();
+      a1_untapped.surface = g.add_buffer("filter_surface.untapped", packed_bytes);
+      const auto untapped_sums = passes::add_local_mean_sums_image(g, "history.untapped", uw, uh, k);
+      a1_untapped.local_mean_sums = {untapped_sums, std::nullopt, block};
+      passes::add_atrous(g, pipelines, a1_untapped, 0, settings);
       // The second iteration writes the corrected history itself (atrous.hpp's HistoryCorrection),
       // with the box means of the reference's history correction (below).
       const auto history_corrected = g.add_image("color_history.corrected", uw, uh, F::RGBA16F);
@@ -972,7 +981,8 @@ TEST_CASE(
           g, pipelines,
           {integrated, last, g.add_image("corrected", uw, uh, F::RGBA16F), "ref", true, want_history.block_sums},
           settings);
-      ImageD got_h, got_d, want_h, want_d, got_history, want_history_image;
+      ImageD got_h, got_untapped, got_d, want_h, want_d, got_history, want_history_image;
+      harness.readback(g, untapped_sums, &got_untapped);
       harness.readback(g, history_corrected, &got_history);
       harness.readback(g, corrected_history, &want_history_image);
       harness.readback(g, history_sums, &got_h);
@@ -983,6 +993,7 @@ TEST_CASE(
       const auto exact = [](double) { return 1.0; };
       REQUIRE(got_h.width == (w + block - 1) / block);
       CHECK(compare(got_h, want_h, 4, exact).worst_error == 0.0);
+      CHECK(compare(got_untapped, want_h, 4, exact).worst_error == 0.0);
       CHECK(compare(got_d, want_d, 4, exact).worst_error == 0.0);
       CHECK(compare(got_history, want_history_image, 4, exact).worst_error == 0.0);
       CHECK(want_h.at(0, 0, 3) == double(std::min(block, h) * std::min(block, w)));  // a whole block's pixels
