@@ -14,14 +14,12 @@
 // RGBA16F image. HISTORY also writes the result to the colour history (the history tap). COMPOSITE
 // (a one-signal chain's last, packed-in iteration) composites the result (common/composite.glsl),
 // unrounded, instead of writing it to an RGBA16F image for the composite pass: 16 bytes a pixel and
-// a dispatch fewer. With COMPOSITE_LOCAL_MEAN it first applies the displayed colour's local-mean
-// correction (composite.comp's LOCAL_MEAN) with box means of the previous iteration's block sums.
+// a dispatch fewer.
 // LOCAL_MEAN_SUMS (the local-mean correction, common/local_mean.glsl) also sums the result's
 // luminance over blocks of local_mean_block pixels into block_sums: the first packed iteration with
-// the history tap with the temporal result's terms (the history's correction), a packed-in later
-// iteration with them taken from temporal_sums (the displayed colour's: the last iteration, or the one
-// before a last that composites with COMPOSITE_LOCAL_MEAN), so that no pass reads these images again
-// to sum them (local_mean.comp's BLOCKS does the same where no iteration can).
+// the history tap with the temporal result's terms (the history's correction), a packed-in last
+// iteration with them taken from temporal_sums (the displayed colour's), so that no pass reads these
+// images again to sum them (local_mean.comp's BLOCKS does the same where no iteration can).
 // CORRECTS_HISTORY (a packed middle iteration after the history tap) writes the colour history: the
 // previous iteration's result corrected toward the temporal result's local mean with the history's
 // box means (local_mean.comp), so that the tapped result is not written to an image and read back.
@@ -70,8 +68,8 @@ layout(set = 0, binding = 0) uniform Params {
   float min_history;  // of the variance estimate (first packed iteration)
   float exposure;     // COMPOSITE: multiplier applied before the tone curve
   uint tonemap;       // COMPOSITE: 0 clamp, 1 ACES (Narkowicz)
-  int local_mean_block;   // LOCAL_MEAN_SUMS, CORRECTS_HISTORY, COMPOSITE_LOCAL_MEAN: pixels a block's side (1, 2, 4, 8)
-  int local_mean_radius;  // CORRECTS_HISTORY, COMPOSITE_LOCAL_MEAN: the correction's window, in blocks
+  int local_mean_block;   // LOCAL_MEAN_SUMS, CORRECTS_HISTORY: pixels a block's side (1, 2, 4 or 8)
+  int local_mean_radius;  // CORRECTS_HISTORY: the correction's window, in blocks
 } params;
 #ifdef PACKED_IN
 layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec2 texels[]; } color_in;
@@ -99,11 +97,6 @@ layout(set = 0, binding = 10) buffer Counters {
   uint zeroed_outputs;
 } counters;
 #include "common/composite.glsl"
-#ifdef COMPOSITE_LOCAL_MEAN
-layout(set = 0, binding = 13) uniform texture2D box_means;  // the displayed colour's correction's (local_mean.comp)
-#define LOCAL_MEAN_READS_BOX_MEANS
-#include "common/local_mean.glsl"
-#endif
 #else
 layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D color_out;
 #endif
@@ -238,10 +231,6 @@ vec4 filter_pixel(ivec2 p) {
 #ifdef FIRST_PACKED
   surface.texels[texel_index(p)] = pack_filter_surface(center.z, dz, center.n);
 #endif
-#elif defined(COMPOSITE_LOCAL_MEAN)
-  const float display_scale =
-      local_mean_scale(p, ivec2(params.width, params.height), params.local_mean_block, params.local_mean_radius, true);
-  composite_pixel(p, local_mean_corrected(result, display_scale).rgb);
 #elif defined(COMPOSITE)
   composite_pixel(p, result.rgb);
 #else

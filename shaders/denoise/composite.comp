@@ -5,8 +5,7 @@
 // last pass, which then runs only where something reads its image), so that the corrected colour
 // is not written and read back.
 // Where a chain ends in a packed a-trous iteration and has one signal, that iteration composites
-// itself (atrous.comp, COMPOSITE; with the local-mean correction where its window is of blocks:
-// COMPOSITE_LOCAL_MEAN) and this pass does not run.
+// itself (atrous.comp, COMPOSITE) and this pass does not run.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require

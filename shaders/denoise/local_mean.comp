@@ -13,9 +13,8 @@
 // same blocks and reads the filtered colour only), BOX sums them over each block's window of blocks
 // (clamped to the image), the last interpolates and scales. By default the a-trous iterations do the
 // first and last passes' work themselves (atrous.comp, LOCAL_MEAN_SUMS and CORRECTS_HISTORY) and the
-// composite scales the displayed colour (composite.comp, LOCAL_MEAN), or with a window of blocks the
-// last iteration does, from the sums of the one before (atrous.comp, COMPOSITE_LOCAL_MEAN): these
-// passes run where they cannot (denoiser/passes/denoiser_graph.cpp). Two k-wide separable passes over every pixel cost
+// composite scales the displayed colour (composite.comp, LOCAL_MEAN): these passes run where they
+// cannot (denoiser/passes/denoiser_graph.cpp). Two k-wide separable passes over every pixel cost
 // 0.26 ms at 1080p and k 65; the block passes touch each pixel once (docs/quality.md, "The box over
 // blocks").
 #version 460

@@ -12,10 +12,8 @@ asvgf_add_shader(atrous SOURCE denoise/atrous.comp
                           first_sums=PACKED_OUT,LOCAL_MEAN_SUMS first_history_sums=PACKED_OUT,HISTORY,LOCAL_MEAN_SUMS
                           middle=PACKED_IN,PACKED_OUT middle_history=PACKED_IN,PACKED_OUT,HISTORY
                           middle_corrects_history=PACKED_IN,PACKED_OUT,CORRECTS_HISTORY
-                          middle_sums=PACKED_IN,PACKED_OUT,LOCAL_MEAN_SUMS
                           last=PACKED_IN last_history=PACKED_IN,HISTORY last_sums=PACKED_IN,LOCAL_MEAN_SUMS
-                          last_composite=PACKED_IN,COMPOSITE last_history_composite=PACKED_IN,HISTORY,COMPOSITE
-                          last_composite_local_mean=PACKED_IN,COMPOSITE,COMPOSITE_LOCAL_MEAN)
+                          last_composite=PACKED_IN,COMPOSITE last_history_composite=PACKED_IN,HISTORY,COMPOSITE)
 asvgf_add_shader(composite SOURCE denoise/composite.comp VARIANTS one split=SPLIT local_mean=LOCAL_MEAN)
 asvgf_add_shader(local_mean SOURCE denoise/local_mean.comp VARIANTS blocks=BLOCKS blocks_filtered=BLOCKS,TEMPORAL_SUMS box=BOX apply)
 asvgf_add_shader(pack_surface SOURCE denoise/pack_surface.comp)

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <random>
-#include <set>
 
 #include "asvgf/graph_runtime.hpp"
 #include "asvgf/pass_traffic.hpp"
@@ -246,7 +245,7 @@ TEST_CASE(
 
 TEST_CASE(
     "culling: an output nobody reads culls its pass, a still frame culls the gradient passes, the composite "
-    "applies the local-mean correction itself, or with a window of blocks the last a-trous iteration does") {
+    "applies the local-mean correction itself") {
   Scene scene;
   graph::GraphRuntime runtime(scene.device);
   frame::FrameGraphBuilder builder(scene.device);
@@ -268,30 +267,6 @@ TEST_CASE(
     }
     CHECK(culled.count("atrous.5") == 0);
     CHECK(culled.count("local_mean.blocks") == 0);
-  }
-  {
-    // A window of blocks (k 17: blocks of 2 pixels): the iteration before the last sums the displayed
-    // colour's blocks and the last composites with their correction; its output, the corrected
-    // colour and the composite pass are what only a reader wants.
-    s.denoise.local_mean = 17;
-    scene.gpu.update(0);
-    auto blocks_graph = builder.build(s, scene.gpu, scene.targets(16, 16));
-    auto compiled = runtime.compile(blocks_graph);
-    std::map<std::string, std::string> culled;
-    for (const auto& c : compiled.culled) culled[c.name] = c.reason;
-    for (const char* name : {"variance", "local_mean", "atrous.5"}) {
-      CAPTURE(name);
-      REQUIRE(culled.count(name) == 1);
-      CHECK(culled[name].find("nothing that contributes") != std::string::npos);
-    }
-    std::set<std::string> run;
-    for (const auto& pass : compiled.passes) run.insert(blocks_graph.passes()[pass.pass].name);
-    for (const char* name : {"atrous.4", "local_mean.box", "atrous.5+composite"}) {
-      CAPTURE(name);
-      CHECK(run.count(name) == 1);
-    }
-    CHECK(run.count("composite") == 0);
-    CHECK(run.count("local_mean.blocks") == 0);
   }
   // Without it, the paper's filter: the last a-trous iteration composites.
   s.denoise.local_mean = 0;

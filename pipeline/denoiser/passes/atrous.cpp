@@ -1,13 +1,10 @@
 #include "denoiser/passes/atrous.hpp"
 
 #include <cstddef>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include "denoiser/passes/local_mean.hpp"
 
 #include "shaders/atrous.first.hpp"
 #include "shaders/atrous.first_history.hpp"
@@ -16,14 +13,12 @@
 #include "shaders/atrous.history.hpp"
 #include "shaders/atrous.last.hpp"
 #include "shaders/atrous.last_composite.hpp"
-#include "shaders/atrous.last_composite_local_mean.hpp"
 #include "shaders/atrous.last_history.hpp"
 #include "shaders/atrous.last_history_composite.hpp"
 #include "shaders/atrous.last_sums.hpp"
 #include "shaders/atrous.middle.hpp"
 #include "shaders/atrous.middle_corrects_history.hpp"
 #include "shaders/atrous.middle_history.hpp"
-#include "shaders/atrous.middle_sums.hpp"
 #include "shaders/atrous.plain.hpp"
 
 namespace asvgf::passes {
@@ -33,17 +28,12 @@ namespace {
 using Uniforms = asvgf::shaders::atrous_plain_uniforms::Params;
 
 // The variant for the chain position: a storage buffer (the packed filter texels) in or out, the
-// history tap, composite folded in (with the displayed colour's local-mean correction), the local
-// mean's block sums or history correction.
-const hal::ShaderInfo& atrous_shader(bool packed_in, bool packed_out, bool history, bool composite,
-                                     bool composite_local_mean, bool sums, bool corrects_history) {
+// history tap, composite folded in, the local mean's block sums or history correction.
+const hal::ShaderInfo& atrous_shader(bool packed_in, bool packed_out, bool history, bool composite, bool sums,
+                                     bool corrects_history) {
   namespace sh = asvgf::shaders;
   if (corrects_history) return sh::atrous_middle_corrects_history;
-  if (sums) {
-    if (packed_in) return packed_out ? sh::atrous_middle_sums : sh::atrous_last_sums;
-    return history ? sh::atrous_first_history_sums : sh::atrous_first_sums;
-  }
-  if (composite_local_mean) return sh::atrous_last_composite_local_mean;
+  if (sums) return packed_in ? sh::atrous_last_sums : history ? sh::atrous_first_history_sums : sh::atrous_first_sums;
   if (composite) return history ? sh::atrous_last_history_composite : sh::atrous_last_composite;
   if (packed_in) {
     if (packed_out) return history ? sh::atrous_middle_history : sh::atrous_middle;
@@ -63,9 +53,6 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
   const bool packed_out = !composite && graph.resource(r.color_out).kind == hal::ResourceKind::Buffer;
   if (composite && (!packed_in || r.composite->specular))
     throw std::invalid_argument("add_atrous: only a one-signal chain's last packed-in iteration composites");
-  const bool composite_local_mean = composite && r.composite->local_mean_box_means.has_value();
-  if (composite_local_mean && r.color_history)
-    throw std::invalid_argument("add_atrous: no history tap in an iteration that composites with the local mean");
   if (packed_out && !packed_in && iteration != 0)
     throw std::invalid_argument("add_atrous: packed filter texels from an RGBA16F input only at iteration 0 (step 1)");
   if ((packed_in || packed_out) && !r.surface)
@@ -77,10 +64,10 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
                      : "add_atrous: only the first packed iteration reads the variance estimate's moments and albedo");
   if (r.local_mean_sums) {
     const bool first = first_packed && !r.local_mean_sums->temporal_sums;
-    const bool later = packed_in && !composite && !r.color_history && r.local_mean_sums->temporal_sums;
-    if (!first && !later)
+    const bool last = packed_in && !packed_out && !composite && !r.color_history && r.local_mean_sums->temporal_sums;
+    if (!first && !last)
       throw std::invalid_argument(
-          "add_atrous: the local mean's block sums come from the first packed iteration, or from a packed-in "
+          "add_atrous: the local mean's block sums come from the first packed iteration, or from a packed-in last "
           "iteration without the history tap with the temporal terms' sums");
     const int b = r.local_mean_sums->block;
     if (b != 1 && b != 2 && b != 4 && b != 8)
@@ -108,10 +95,6 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
       throw std::invalid_argument("add_atrous: '" + other.name + "' does not match depth_normal's " +
                                   std::to_string(decl.width) + "x" + std::to_string(decl.height));
   }
-  // The window of the displayed colour's correction where this iteration applies it (composite.cpp's).
-  const std::optional<LocalMeanBlocks> display_blocks =
-      composite_local_mean ? std::optional(local_mean_blocks(local_mean_window(s, decl.width, decl.height)))
-                           : std::nullopt;
   const Uniforms u{decl.width,
                    decl.height,
                    1 << iteration,
@@ -124,19 +107,16 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
                    static_cast<std::uint32_t>(s.tonemap),
                    r.local_mean_sums    ? r.local_mean_sums->block
                    : r.corrects_history ? r.corrects_history->block
-                   : display_blocks     ? display_blocks->block
                                         : 1,
-                   r.corrects_history ? r.corrects_history->radius
-                   : display_blocks   ? display_blocks->radius
-                                      : 0};
+                   r.corrects_history ? r.corrects_history->radius : 0};
   std::vector<Binding> bindings{{first_packed ? "integrated" : "color_in", r.color_in}};
   if (composite)
     bindings.insert(bindings.end(), {{"albedo", r.composite->albedo},
                                      {"hdr", r.composite->hdr},
                                      {"display", r.composite->display},
                                      {"counters", r.composite->counters}});
-  if (composite_local_mean) bindings.push_back({"box_means", *r.composite->local_mean_box_means});
-  if (!composite) bindings.push_back({"color_out", r.color_out});
+  else
+    bindings.push_back({"color_out", r.color_out});
   if (first_packed) bindings.insert(bindings.end(), {{"moments", r.estimate->moments}, {"albedo", r.estimate->albedo}});
   if (packed_in || first_packed) bindings.push_back({"surface", *r.surface});
   if (!packed_in) bindings.push_back({"depth_normal", r.depth_normal});
@@ -146,9 +126,8 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
     if (r.local_mean_sums->temporal_sums) bindings.push_back({"temporal_sums", *r.local_mean_sums->temporal_sums});
   }
   if (r.corrects_history) bindings.push_back({"box_means", r.corrects_history->box_means});
-  const hal::ShaderInfo& shader =
-      atrous_shader(packed_in, packed_out, r.color_history.has_value(), composite, composite_local_mean,
-                    r.local_mean_sums.has_value(), r.corrects_history.has_value());
+  const hal::ShaderInfo& shader = atrous_shader(packed_in, packed_out, r.color_history.has_value(), composite,
+                                                r.local_mean_sums.has_value(), r.corrects_history.has_value());
   const auto pipeline = pipelines.get<Uniforms>(shader);
   const std::string name = r.prefix + "atrous." + std::to_string(iteration + 1) + (composite ? "+composite" : "");
   return add_compute_pass(graph, name, shader, pipeline, std::move(bindings), to_bytes(u), {u.width, u.height, 1});

@@ -38,15 +38,12 @@ struct AtrousResources {
   // A one-signal chain's last packed-in iteration may do the composite pass's work itself
   // (specular must be absent): it writes hdr and display instead of color_out, and its pass is
   // named "<prefix>atrous.<iteration + 1>+composite". The illumination it composites is its own
-  // result, so `composite->illumination` is not read. With `composite->local_mean_box_means` it
-  // applies the displayed colour's local-mean correction first, with box means made from an earlier
-  // iteration's block sums (the composite pass's correction, one iteration early).
+  // result, so `composite->illumination` is not read.
   std::optional<CompositeResources> composite;
   // The local-mean correction's block sums of this iteration's result (local_mean.hpp), written here
   // so that no pass reads the result again to sum it: by the first packed iteration with the history
-  // tap, with the temporal result's terms (color_in's), or by a later packed-in iteration without the
-  // history tap (the last, or a middle one whose next composites with them), with the temporal terms
-  // taken from `temporal_sums` (the history's block sums of the same blocks).
+  // tap, with the temporal result's terms (color_in's), or by a packed-in last iteration, with the
+  // temporal terms taken from `temporal_sums` (the history's block sums of the same blocks).
   struct LocalMeanSums {
     graph::ResourceId block_sums = 0;  // written: RGBA32F, one texel a block
     std::optional<graph::ResourceId> temporal_sums;
@@ -69,7 +66,7 @@ struct AtrousResources {
 // than 8 bytes a pixel, for a packed iteration without `surface`, for the first packed iteration
 // without moments (or moments given to another), for `composite` on another iteration or with a
 // specular signal, for local_mean_sums anywhere but the first packed iteration (without
-// temporal_sums) or a packed-in one without the history tap (with them), and for
+// temporal_sums) or a packed-in last one without the history tap (with them), and for
 // corrects_history anywhere but a packed middle iteration with color_history.
 graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
                               int iteration, const DenoiseSettings& settings);

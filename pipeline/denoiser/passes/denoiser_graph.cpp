@@ -24,18 +24,15 @@ enum class Filter { None, Temporal, Spatiotemporal };
 
 // One signal's temporal filter (and variance and a-trous iterations for Spatiotemporal), with its
 // histories; resources and passes are named with `prefix`. With `composite`, a last a-trous
-// iteration on packed texels also does the composite pass's work (`composited`); with the local-mean
-// correction too, where the iteration before it can make the displayed colour's block sums.
+// iteration on packed texels also does the composite pass's work (`composited`).
 struct Chain {
   graph::ResourceId filtered = 0, moments = 0, integrated = 0, variance = 0, color_history = 0;
   bool composited = false;
   // The tapped history's local-mean correction's block sums, whose temporal terms the displayed
   // colour's correction reads instead of summing the temporal result again.
   std::optional<graph::ResourceId> local_mean_sums;
-  // The displayed colour's block sums, where an a-trous iteration made them: the last, or the one
-  // before it, whose windows' means (display_box_means) the last composites with.
+  // The displayed colour's block sums, where the last a-trous iteration made them.
   std::optional<graph::ResourceId> display_sums;
-  std::optional<graph::ResourceId> display_box_means;
 };
 Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId signal, graph::ResourceId albedo,
                 const std::string& prefix, const GraphDenoiserInputs& in, std::optional<graph::ResourceId> gradient,
@@ -101,32 +98,18 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
             : std::optional(local_mean ? graph.add_image(prefix + "color_history_filtered", w, h, F::RGBA16F)
                                        : c.color_history);
     const bool last_packed = i + 1 == s.atrous_iterations && surface && !packed;
-    // With one signal and a window of blocks (k >= 16), the displayed colour's block sums from the
-    // iteration before the last, so that the last composites with their correction (no composite pass,
-    // no filtered image). What the last iteration moves within the window stays corrected; what it
-    // drains goes uncorrected, about 0.1% of the energy. Exact windows of a few pixels would scale
-    // the last result by the previous one's local structure (docs/quality.md, "The displayed colour's
-    // correction one iteration early"). Where that iteration is the first packed one or corrects the
-    // history, or the history's temporal terms come later, the last iteration sums its own result.
-    const bool display_sums_before_last = local_mean && composite && blocks.block > 1 && !tap && packed &&
-                                          !first_packed && i + 2 == s.atrous_iterations && c.local_mean_sums &&
-                                          !history_correction_pending;
     // The local mean's block sums from the iteration whose result they sum, where it can (atrous.hpp):
-    // the history's from the first packed iteration, the displayed colour's from the one before the
-    // last (above) or a packed-in last one (with the history's temporal terms). Elsewhere
-    // local_mean.hpp's blocks pass sums them.
+    // the history's from the first packed iteration, the displayed colour's from a packed-in last one
+    // (with the history's temporal terms). Elsewhere local_mean.hpp's blocks pass sums them.
     std::optional<AtrousResources::LocalMeanSums> sums;
     if (local_mean && tap && first_packed)
       sums = {add_local_mean_sums_image(graph, prefix + "local_mean.history", w, h, k), std::nullopt, blocks.block};
-    else if (display_sums_before_last ||
-             (local_mean && !tap && last_packed && c.local_mean_sums && !c.display_box_means))
+    else if (local_mean && !tap && last_packed && c.local_mean_sums)
       sums = {add_local_mean_sums_image(graph, prefix + "local_mean", w, h, k), c.local_mean_sums, blocks.block};
-    if (last_packed && composite && (!local_mean || c.display_box_means)) {
+    if (last_packed && composite) {
       // The filtered image is still declared, by an iteration without the history tap that only
       // runs where something reads it (the tests' readbacks): the graph leaves it out otherwise.
-      CompositeResources composited = *composite;
-      composited.local_mean_box_means = c.display_box_means;
-      add_atrous(graph, pipelines, {current, in.depth_normal, next, history, prefix, surface, {}, composited}, i, s);
+      add_atrous(graph, pipelines, {current, in.depth_normal, next, history, prefix, surface, {}, composite}, i, s);
       c.composited = true;
       add_atrous(graph, pipelines, {current, in.depth_normal, next, std::nullopt, prefix, surface}, i, s);
     } else {
@@ -158,13 +141,6 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
       }
     } else if (sums) {
       c.display_sums = sums->block_sums;
-      if (display_sums_before_last) {
-        // Their windows' means now, for the last iteration (which applies them: no "local_mean" pass).
-        LocalMeanResources r{c.integrated, next, next, prefix + "local_mean", true};
-        r.block_sums = sums->block_sums;
-        r.apply_pass = false;
-        c.display_box_means = add_local_mean(graph, pipelines, r, s).box_means;
-      }
     }
     current = next;
   }
@@ -230,11 +206,11 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
     // The local-mean correction reads the last iteration's output (s.local_mean, denoiser/passes/local_mean.hpp).
     const bool local_mean =
         local_mean_window(s, w, h) > 0 && filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
-    // One signal: its last packed a-trous iteration composites (with the local-mean correction where
-    // the chain can: add_chain).
+    // One signal: its last packed a-trous iteration composites (but not what is corrected after it).
     const std::optional<CompositeResources> composite =
-        in.specular ? std::nullopt
-                    : std::optional(CompositeResources{0, in.albedo, in.hdr, in.display, in.counters, {}, {}});
+        in.specular || local_mean
+            ? std::nullopt
+            : std::optional(CompositeResources{0, in.albedo, in.hdr, in.display, in.counters, {}, {}});
     diffuse = add_chain(graph, pipelines, in.illumination, in.albedo, "", in, out.gradient, s, filter, composite,
                         std::nullopt, local_mean);
     if (local_mean) {
@@ -244,11 +220,10 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
       const LocalMeanImages images =
           add_local_mean(graph, pipelines,
                          {diffuse.integrated, diffuse.filtered, corrected, "local_mean", true,
-                          // the temporal terms are in the iterations' display sums where they made them
-                          diffuse.display_sums ? std::nullopt : diffuse.local_mean_sums, diffuse.display_sums,
-                          diffuse.display_box_means},
+                          // the temporal terms are in the last iteration's sums where it made them
+                          diffuse.display_sums ? std::nullopt : diffuse.local_mean_sums, diffuse.display_sums},
                          s);
-      if (!in.specular && !diffuse.composited) local_mean_box_means = images.box_means;
+      if (!in.specular) local_mean_box_means = images.box_means;
       composite_input = diffuse.filtered;
       diffuse.filtered = corrected;
     }

@@ -53,13 +53,7 @@ LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelin
   if (graph.resource(sums).width != bw || graph.resource(sums).height != bh)
     throw std::invalid_argument("add_local_mean: '" + graph.resource(sums).name + "' is not the blocks' grid of k " +
                                 std::to_string(k));
-  if (r.box_means && !r.block_sums)
-    throw std::invalid_argument("add_local_mean: box means given without the block sums they were made from");
-  const graph::ResourceId means =
-      r.box_means ? *r.box_means : graph.add_image(r.name + "_box_means", bw, bh, hal::Format::RGBA32F);
-  if (graph.resource(means).width != bw || graph.resource(means).height != bh)
-    throw std::invalid_argument("add_local_mean: '" + graph.resource(means).name + "' is not the blocks' grid of k " +
-                                std::to_string(k));
+  const graph::ResourceId means = graph.add_image(r.name + "_box_means", bw, bh, hal::Format::RGBA32F);
   if (!r.block_sums) {
     const hal::ShaderInfo& blocks_shader =
         r.temporal_sums ? asvgf::shaders::local_mean_blocks_filtered : asvgf::shaders::local_mean_blocks;
@@ -70,9 +64,8 @@ LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelin
                      to_bytes(u), {u.width, u.height, 1});
   }
   const hal::ShaderInfo& box_shader = asvgf::shaders::local_mean_box;
-  if (!r.box_means)
-    add_compute_pass(graph, r.name + ".box", box_shader, pipelines.get<Uniforms>(box_shader),
-                     {{"block_sums", sums}, {"box_means", means}}, to_bytes(u), {bw, bh, 1});
+  add_compute_pass(graph, r.name + ".box", box_shader, pipelines.get<Uniforms>(box_shader),
+                   {{"block_sums", sums}, {"box_means", means}}, to_bytes(u), {bw, bh, 1});
   if (!r.apply_pass) return {sums, means};
   const hal::ShaderInfo& apply_shader = asvgf::shaders::local_mean_apply;
   add_compute_pass(graph, r.name, apply_shader, pipelines.get<Uniforms>(apply_shader),

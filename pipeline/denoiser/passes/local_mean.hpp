@@ -26,9 +26,6 @@ struct LocalMeanResources {
   // Given: the block sums made already (by an a-trous iteration, atrous.hpp's LocalMeanSums, in an
   // image of add_local_mean_sums_image's): no blocks pass.
   std::optional<graph::ResourceId> block_sums;
-  // Given with block_sums: their windows' means made already (by an earlier add_local_mean without
-  // its "<name>" pass): no box pass either.
-  std::optional<graph::ResourceId> box_means;
   // false: no "<name>" pass (an a-trous iteration applies the correction: atrous.hpp's
   // HistoryCorrection); `filtered` and `corrected` are then not read or written.
   bool apply_pass = true;
@@ -53,8 +50,7 @@ struct LocalMeanImages {
 graph::ResourceId add_local_mean_sums_image(graph::RenderGraph& graph, const std::string& name, std::uint32_t width,
                                             std::uint32_t height, int k);
 
-// Adds "<name>.blocks" (unless r.block_sums), "<name>.box" (unless r.box_means) and "<name>" (unless
-// !r.apply_pass), for
+// Adds "<name>.blocks" (unless r.block_sums), "<name>.box" and "<name>" (unless !r.apply_pass), for
 // local_mean_window(settings, ...) > 0. "<name>" writes `corrected` and, like every pass, runs only
 // where something reads it.
 LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
