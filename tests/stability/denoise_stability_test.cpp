@@ -6,6 +6,8 @@
 // afterwards (frames counted and printed).
 #include <doctest/doctest.h>
 
+#include <utility>
+
 #include "pipeline/denoise_chain.hpp"
 #include "vulkan/validated_device.hpp"
 
@@ -94,19 +96,24 @@ FrameInput noisy_frame(Random& r, int w, int h, double mean) {
 
 TEST_CASE("denoise stability: single-pixel fireflies of 1e6 stay finite, create no energy, and fade") {
   ValidatedDevice device;
-  Runner run(*device, {});
-  const int w = 32, h = 32;
-  Random r(5);
-  for (int frame = 0; frame < 4; ++frame) {
-    FrameInput f = flat_frame(w, h, 0.5);
-    f.illumination.at(static_cast<int>(r.uniform(0, w)), static_cast<int>(r.uniform(0, h)), frame % 3) = 1e6;
-    const FrameOutput out = run.frame(f);
-    for (double v : out.color_history.data) CHECK(std::abs(v) <= 65504.0);
+  for (const int local_mean : {-1, 17}) {  // windows by the size (exact) and of blocks of 2 pixels
+    CAPTURE(local_mean);
+    asvgf::DenoiseSettings s;
+    s.local_mean = local_mean;
+    Runner run(*device, s);
+    const int w = 32, h = 32;
+    Random r(5);
+    for (int frame = 0; frame < 4; ++frame) {
+      FrameInput f = flat_frame(w, h, 0.5);
+      f.illumination.at(static_cast<int>(r.uniform(0, w)), static_cast<int>(r.uniform(0, h)), frame % 3) = 1e6;
+      const FrameOutput out = run.frame(f);
+      for (double v : out.color_history.data) CHECK(std::abs(v) <= 65504.0);
+    }
+    // A clamped firefly (65504) leaves the history at rate (1 - alpha) per frame: ~45 frames to 1%.
+    const int frames = run.recover(flat_frame(w, h, 0.5), 0.5, 0.01, 80);
+    MESSAGE("fireflies: back within 1% of the clean mean after " << frames << " frames");
+    CHECK(frames > 0);
   }
-  // A clamped firefly (65504) leaves the history at rate (1 - alpha) per frame: ~45 frames to 1%.
-  const int frames = run.recover(flat_frame(w, h, 0.5), 0.5, 0.01, 80);
-  MESSAGE("fireflies: back within 1% of the clean mean after " << frames << " frames");
-  CHECK(frames > 0);
 }
 
 TEST_CASE("denoise stability: black frames followed by a bright one") {
@@ -153,9 +160,14 @@ TEST_CASE("denoise stability: NaN and +-Inf samples are dropped and counted, nev
 
 TEST_CASE("denoise stability: a constant image has zero variance and comes out unchanged") {
   ValidatedDevice device;
-  for (const auto kernel : {asvgf::AtrousKernel::B3Spline, asvgf::AtrousKernel::Box}) {
+  // Local-mean windows by the size (exact, 5 pixels) and of blocks (k 17: blocks of 2 pixels).
+  for (const auto& [kernel, local_mean] :
+       {std::pair{asvgf::AtrousKernel::B3Spline, -1}, std::pair{asvgf::AtrousKernel::B3Spline, 17},
+        std::pair{asvgf::AtrousKernel::Box, -1}}) {
+    CAPTURE(local_mean);
     asvgf::DenoiseSettings s;
     s.kernel = kernel;
+    s.local_mean = local_mean;
     Runner run(*device, s);
     FrameInput f = flat_frame(19, 11, 0.0);
     for (int y = 0; y < 11; ++y)
