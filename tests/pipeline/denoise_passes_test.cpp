@@ -884,11 +884,11 @@ TEST_CASE(
       ImageD got, got_shared, got_hdr;
       if (gated) {
         const auto hdr = g.add_image("hdr", w, h, F::RGBA32F);
-        passes::add_composite(g, pipelines,
-                              {filtered_id, harness.input(g, "albedo", ImageD(w, h, 4, 1.0), F::RGBA16F), hdr,
-                               g.add_image("display", w, h, F::RGBA8Unorm), counters.import(g), std::nullopt,
-                               std::nullopt, second.box_means},
-                              settings);
+        passes::add_composite(
+            g, pipelines,
+            {filtered_id, harness.input(g, "albedo", ImageD(w, h, 4, 1.0), F::RGBA16F), hdr,
+             g.add_image("display", w, h, F::RGBA8Unorm), counters.import(g), std::nullopt, std::nullopt, second},
+            settings);
         harness.readback(g, hdr, &got_hdr);
       }
       harness.readback(g, corrected, &got);

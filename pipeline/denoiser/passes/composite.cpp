@@ -3,8 +3,6 @@
 #include <cstddef>
 #include <stdexcept>
 
-#include "denoiser/passes/local_mean.hpp"
-
 #include "shaders/composite.local_mean.hpp"
 #include "shaders/composite.one.hpp"
 #include "shaders/composite.split.hpp"
@@ -21,15 +19,14 @@ graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipel
                                  const DenoiseSettings& s) {
   const auto& decl = graph.resource(r.hdr);
   const bool split = r.specular.has_value();
-  if (split && r.local_mean_box_means)
+  if (split && r.local_mean)
     throw std::invalid_argument("add_composite: the local-mean correction is applied here for one signal only");
-  const LocalMeanBlocks blocks =
-      r.local_mean_box_means ? local_mean_blocks(local_mean_window(s, decl.width, decl.height)) : LocalMeanBlocks{};
+  const LocalMeanBlocks blocks = r.local_mean ? r.local_mean->blocks : LocalMeanBlocks{};
   const Uniforms u{decl.width,    decl.height, s.exposure, static_cast<std::uint32_t>(s.tonemap),
                    blocks.radius, blocks.block};
-  const hal::ShaderInfo& shader = split                    ? asvgf::shaders::composite_split
-                                  : r.local_mean_box_means ? asvgf::shaders::composite_local_mean
-                                                           : asvgf::shaders::composite_one;
+  const hal::ShaderInfo& shader = split          ? asvgf::shaders::composite_split
+                                  : r.local_mean ? asvgf::shaders::composite_local_mean
+                                                 : asvgf::shaders::composite_one;
   const auto pipeline = pipelines.get<Uniforms>(shader);
   std::vector<Binding> bindings{{"illumination", r.illumination},
                                 {"albedo", r.albedo},
@@ -38,7 +35,7 @@ graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipel
                                 {"counters", r.counters}};
   if (split)
     bindings.insert(bindings.end(), {{"specular", *r.specular}, {"specular_albedo", r.specular_albedo.value()}});
-  if (r.local_mean_box_means) bindings.push_back({"box_means", *r.local_mean_box_means});
+  if (r.local_mean) bindings.push_back({"box_means", r.local_mean->box_means});
   return add_compute_pass(graph, "composite", shader, pipeline, std::move(bindings), to_bytes(u),
                           {u.width, u.height, 1});
 }

@@ -7,6 +7,7 @@
 #include "asvgf/compute_pass.hpp"
 #include "asvgf/denoise_settings.hpp"
 #include "asvgf/render_graph.hpp"
+#include "denoiser/passes/local_mean.hpp"
 
 namespace asvgf::passes {
 
@@ -18,11 +19,11 @@ struct CompositeResources {
   graph::ResourceId counters = 0;      // read-written SanitizeCounters buffer: zeroed outputs
   // The filtered specular signal and its albedo, added (pathtrace's split signals).
   std::optional<graph::ResourceId> specular, specular_albedo;
-  // The displayed colour's local-mean correction, applied here (one signal only): the box means
-  // of local_mean.hpp's LocalMeanImages, with local_mean_window(settings, ...)'s blocks.
-  std::optional<graph::ResourceId> local_mean_box_means;
+  // The displayed colour's local-mean correction, applied here (one signal only): its box means,
+  // with the window's blocks they were made for.
+  std::optional<LocalMeanImages> local_mean;
 };
-// Adds "composite" (settings.exposure, settings.tonemap; settings.local_mean with local_mean_box_means).
+// Adds "composite" (settings.exposure, settings.tonemap; the local-mean correction with r.local_mean).
 graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipelines, const CompositeResources& r,
                                  const DenoiseSettings& settings);
 

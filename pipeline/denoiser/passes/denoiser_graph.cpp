@@ -200,7 +200,7 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
   Chain diffuse;
   // Where the composite applies the displayed colour's local-mean correction itself: the windows'
   // means, and the uncorrected colour it reads.
-  std::optional<ResourceId> local_mean_box_means;
+  std::optional<LocalMeanImages> display_local_mean;
   ResourceId composite_input = 0;
   if (filter != Filter::None) {
     // The local-mean correction reads the last iteration's output (s.local_mean, denoiser/passes/local_mean.hpp).
@@ -223,7 +223,7 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
                           // the temporal terms are in the last iteration's sums where it made them
                           diffuse.display_sums ? std::nullopt : diffuse.local_mean_sums, diffuse.display_sums},
                          s);
-      if (!in.specular) local_mean_box_means = images.box_means;
+      if (!in.specular) display_local_mean = images;
       composite_input = diffuse.filtered;
       diffuse.filtered = corrected;
     }
@@ -248,8 +248,8 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
 
   if (!diffuse.composited)
     add_composite(graph, pipelines,
-                  {local_mean_box_means ? composite_input : out.filtered, in.albedo, in.hdr, in.display, in.counters,
-                   out.specular, out.specular ? in.specular_albedo : std::nullopt, local_mean_box_means},
+                  {display_local_mean ? composite_input : out.filtered, in.albedo, in.hdr, in.display, in.counters,
+                   out.specular, out.specular ? in.specular_albedo : std::nullopt, display_local_mean},
                   s);
   return out;
 }

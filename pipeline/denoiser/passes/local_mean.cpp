@@ -66,12 +66,12 @@ LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelin
   const hal::ShaderInfo& box_shader = asvgf::shaders::local_mean_box;
   add_compute_pass(graph, r.name + ".box", box_shader, pipelines.get<Uniforms>(box_shader),
                    {{"block_sums", sums}, {"box_means", means}}, to_bytes(u), {bw, bh, 1});
-  if (!r.apply_pass) return {sums, means};
+  if (!r.apply_pass) return {sums, means, b};
   const hal::ShaderInfo& apply_shader = asvgf::shaders::local_mean_apply;
   add_compute_pass(graph, r.name, apply_shader, pipelines.get<Uniforms>(apply_shader),
                    {{"box_means", means}, {"filtered", r.filtered}, {"corrected", r.corrected}}, to_bytes(u),
                    {u.width, u.height, 1});
-  return {sums, means};
+  return {sums, means, b};
 }
 
 }  // namespace asvgf::passes

@@ -45,6 +45,7 @@ LocalMeanBlocks local_mean_blocks(int k);
 struct LocalMeanImages {
   graph::ResourceId block_sums = 0;
   graph::ResourceId box_means = 0;
+  LocalMeanBlocks blocks;  // the window they were made for, which whoever applies them needs
 };
 // Declares "<name>_block_sums", the block sums' RGBA32F image for a width x height image and window k.
 graph::ResourceId add_local_mean_sums_image(graph::RenderGraph& graph, const std::string& name, std::uint32_t width,
