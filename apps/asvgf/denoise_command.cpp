@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "asvgf/denoiser.hpp"
@@ -159,7 +160,7 @@ int run_denoise(DenoiseOptions& o) {
                                std::to_string(frames));
 
   const std::string cycles_layer = o.conventions.from == "cycles"
-                                       ? cycles_layer_of(render::read_exr_channel_names(color.path(o.first)))
+                                       ? cycles_layer_of(render::read_exr_header(color.path(o.first)).channels)
                                        : std::string();
   const InputConventions conventions =
       resolve_input_conventions(o.conventions, o.color_from_folder, cycles_layer, still);
@@ -243,6 +244,18 @@ int run_denoise(DenoiseOptions& o) {
   }
   if (!reference.empty()) output_files.emplace_back("--out", dir / "metrics.csv");
   refuse_overwriting_inputs(input_files, output_files);
+  // Every frame's files by their headers (not their pixels), before anything is written: a file of
+  // another size or an unreadable one late in the sequence stops the run here, not after the
+  // frames before it were written.
+  for (int i = 0; i < frames; ++i) {
+    std::set<std::filesystem::path> checked;  // --from cycles: one file holds every buffer
+    for (const Input& in : inputs)
+      if (!in.pattern->empty() && checked.insert(in.pattern->path(o.first + i)).second)
+        check_frame_header(*in.pattern, o.first + i, in.spec);
+    if (!gradient.empty()) check_frame_header(gradient, o.first + i, gradient_spec);
+    if (!reference.empty() && checked.insert(reference.path(o.first + i)).second)
+      check_frame_header(reference, o.first + i, {"reference", w, h});
+  }
   std::filesystem::create_directories(dir);
   report_stale_partials("denoise", dir);
   if (!o.quiet)

@@ -99,14 +99,33 @@ int count_frames(const FramePattern& pattern, int first, int wanted) {
   return n;
 }
 
+namespace {
+
+std::string frame_what(const std::filesystem::path& path, int frame, const BufferSpec& spec) {
+  return path.string() + " (" + spec.name + ", frame " + std::to_string(frame) + ")";
+}
+
+void check_size(const std::string& what, std::uint32_t width, std::uint32_t height, const BufferSpec& spec) {
+  if (spec.width && (width != spec.width || height != spec.height))
+    throw render::ImageIoError(what + ": " + std::to_string(width) + "x" + std::to_string(height) + ", expected " +
+                               std::to_string(spec.width) + "x" + std::to_string(spec.height));
+}
+
+}  // namespace
+
+void check_frame_header(const FramePattern& pattern, int frame, const BufferSpec& spec) {
+  const std::filesystem::path path = pattern.path(frame);
+  if (!std::filesystem::exists(path)) return;
+  const render::ExrHeader header = render::read_exr_header(path);
+  check_size(frame_what(path, frame, spec), header.width, header.height, spec);
+}
+
 render::ExrImage read_frame(const FramePattern& pattern, int frame, const BufferSpec& spec) {
   const std::filesystem::path path = pattern.path(frame);
-  const std::string what = path.string() + " (" + spec.name + ", frame " + std::to_string(frame) + ")";
+  const std::string what = frame_what(path, frame, spec);
   if (!std::filesystem::exists(path)) throw render::ImageIoError(what + ": missing");
   render::ExrImage image = render::read_exr(path, spec.file_channels);
-  if (spec.width && (image.width != spec.width || image.height != spec.height))
-    throw render::ImageIoError(what + ": " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                               ", expected " + std::to_string(spec.width) + "x" + std::to_string(spec.height));
+  check_size(what, image.width, image.height, spec);
   for (const auto& c : spec.channels)
     if (std::find(image.channels.begin(), image.channels.end(), c) == image.channels.end())
       throw render::ImageIoError(what + ": no channel " + c + " (the " + spec.name + " buffer needs " +

@@ -45,6 +45,10 @@ struct BufferSpec {
 // the file: missing, unreadable, another size, a missing channel, a NaN or (unless allowed) an Inf,
 // with its pixel.
 render::ExrImage read_frame(const FramePattern& pattern, int frame, const BufferSpec& spec);
+// Checks frame `frame` of `pattern` from its header alone, before a run reads any frame: readable
+// and of spec's size (a missing file is read_frame's to report). Throws render::ImageIoError as
+// read_frame does.
+void check_frame_header(const FramePattern& pattern, int frame, const BufferSpec& spec);
 
 // Frames first, first+1, ... while `pattern` has a file; 0 when the first is missing. Throws
 // render::ImageIoError naming the first missing file when a later frame exists (a gap), unless

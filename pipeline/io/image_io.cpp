@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -125,20 +126,36 @@ std::string layers_of(const std::vector<std::string>& channels) {
 
 }  // namespace
 
-std::vector<std::string> read_exr_channel_names(const std::filesystem::path& path) {
-  EXRVersion version;
-  EXRHeader header;
-  InitEXRHeader(&header);
-  const char* err = nullptr;
-  if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS || version.multipart || version.non_image ||
-      ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
+ExrHeader read_exr_header(const std::filesystem::path& path) {
+  // tinyexr's ParseEXRHeaderFromFile reads the whole file; the header is its first few KiB (a
+  // multilayer file's hundreds of channels included), so read a prefix, and a larger one if short.
+  std::ifstream file(path, std::ios::binary);
+  std::vector<unsigned char> bytes;
+  for (const std::size_t limit : {std::size_t{1} << 16, std::size_t{1} << 22}) {
+    if (!file) break;
+    const std::size_t have = bytes.size();
+    bytes.resize(limit);
+    file.read(reinterpret_cast<char*>(bytes.data() + have), static_cast<std::streamsize>(limit - have));
+    bytes.resize(have + static_cast<std::size_t>(file.gcount()));
+    EXRVersion version;
+    EXRHeader header;
+    InitEXRHeader(&header);
+    const char* err = nullptr;
+    if (ParseEXRVersionFromMemory(&version, bytes.data(), bytes.size()) == TINYEXR_SUCCESS && !version.multipart &&
+        !version.non_image &&
+        ParseEXRHeaderFromMemory(&header, &version, bytes.data(), bytes.size(), &err) == TINYEXR_SUCCESS) {
+      ExrHeader out;
+      out.width = static_cast<std::uint32_t>(header.data_window.max_x - header.data_window.min_x + 1);
+      out.height = static_cast<std::uint32_t>(header.data_window.max_y - header.data_window.min_y + 1);
+      for (int i = 0; i < header.num_channels; ++i) out.channels.emplace_back(header.channels[i].name);
+      FreeEXRHeader(&header);
+      return out;
+    }
     if (err) FreeEXRErrorMessage(err);
-    throw ImageIoError(path.string() + ": cannot read EXR: not a single-part OpenEXR file (or unreadable)");
+    FreeEXRHeader(&header);
+    if (bytes.size() < limit) break;  // the whole file was read
   }
-  std::vector<std::string> names;
-  for (int i = 0; i < header.num_channels; ++i) names.emplace_back(header.channels[i].name);
-  FreeEXRHeader(&header);
-  return names;
+  throw ImageIoError(path.string() + ": cannot read EXR: not a single-part OpenEXR file (or unreadable)");
 }
 
 ExrImage read_exr(const std::filesystem::path& path, std::span<const std::string> slots) {

@@ -28,7 +28,7 @@ void write_exr(const std::filesystem::path& path, std::uint32_t width, std::uint
 
 struct ExrImage {
   std::uint32_t width = 0, height = 0;
-  std::vector<float> rgba;  // width*height*4, rows top to bottom (A = 1 where the file has none)
+  std::vector<float> rgba;            // width*height*4, rows top to bottom (A = 1 where the file has none)
   std::vector<std::string> channels;  // the names the file declares ("R", "G", "B", ...), plus R, G, B for a grey file
 };
 // Reads a single-part OpenEXR file (half or float channels, scanline or tiled): R, G, B and A by
@@ -37,7 +37,12 @@ struct ExrImage {
 // channels go into R, G, B, A in order instead, each one required; `channels` is then "R", "G", ...
 // for the slots read. Throws ImageIoError naming the file (and, for a missing channel, its layers).
 ExrImage read_exr(const std::filesystem::path& path, std::span<const std::string> slots = {});
-// The channel names a single-part OpenEXR file declares. Throws ImageIoError naming the file.
-std::vector<std::string> read_exr_channel_names(const std::filesystem::path& path);
+// What a single-part OpenEXR file's header declares: its data window's size and its channel names.
+// Reads the header's bytes only (a few KiB), not the pixels. Throws ImageIoError naming the file.
+struct ExrHeader {
+  std::uint32_t width = 0, height = 0;
+  std::vector<std::string> channels;
+};
+ExrHeader read_exr_header(const std::filesystem::path& path);
 
 }  // namespace asvgf::render
