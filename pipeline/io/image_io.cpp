@@ -132,7 +132,6 @@ ExrHeader read_exr_header(const std::filesystem::path& path) {
   std::ifstream file(path, std::ios::binary);
   std::vector<unsigned char> bytes;
   for (const std::size_t limit : {std::size_t{1} << 16, std::size_t{1} << 22}) {
-    if (!file) break;
     const std::size_t have = bytes.size();
     bytes.resize(limit);
     file.read(reinterpret_cast<char*>(bytes.data() + have), static_cast<std::streamsize>(limit - have));
@@ -153,7 +152,7 @@ ExrHeader read_exr_header(const std::filesystem::path& path) {
     }
     if (err) FreeEXRErrorMessage(err);
     FreeEXRHeader(&header);
-    if (bytes.size() < limit) break;  // the whole file was read
+    if (bytes.size() < limit) break;  // the whole file was read (none where it did not open)
   }
   throw ImageIoError(path.string() + ": cannot read EXR: not a single-part OpenEXR file (or unreadable)");
 }
