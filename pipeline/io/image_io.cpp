@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -160,8 +161,12 @@ ExrHeader read_exr_header(const std::filesystem::path& path) {
 ExrImage read_exr(const std::filesystem::path& path, std::span<const std::string> slots) {
   const std::string name = path.string();
   if (slots.size() > 4) throw ImageIoError(name + ": at most 4 channels can be read into one image");
+  // The file read once: tinyexr's ...FromFile calls each read the whole file (header, then pixels).
+  std::ifstream file(path, std::ios::binary);
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  if (file.bad()) throw ImageIoError(name + ": cannot read EXR: reading the file failed (a folder, or an I/O error)");
   EXRVersion version;
-  if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS)
+  if (ParseEXRVersionFromMemory(&version, bytes.data(), bytes.size()) != TINYEXR_SUCCESS)
     throw ImageIoError(name + ": cannot read EXR: not an OpenEXR file (or unreadable)");
   if (version.multipart || version.non_image)
     throw ImageIoError(name + ": cannot read EXR: multi-part and deep files are not supported");
@@ -173,7 +178,8 @@ ExrImage read_exr(const std::filesystem::path& path, std::span<const std::string
     if (err) FreeEXRErrorMessage(err);
     throw ImageIoError(name + ": cannot read EXR: " + message);
   };
-  if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) fail("bad header");
+  if (ParseEXRHeaderFromMemory(&header, &version, bytes.data(), bytes.size(), &err) != TINYEXR_SUCCESS)
+    fail("bad header");
   // A region render (Arnold, Karma, Nuke) stores only the region's pixels, placed in a larger frame.
   // Read as a whole frame they would land at the origin, and pair with other buffers pixel for pixel
   // by position in the file, not in the frame: refused rather than silently moved.
@@ -232,7 +238,7 @@ ExrImage read_exr(const std::filesystem::path& path, std::span<const std::string
   }
   EXRImage image;
   InitEXRImage(&image);
-  if (LoadEXRImageFromFile(&image, &header, path.c_str(), &err) != TINYEXR_SUCCESS) {
+  if (LoadEXRImageFromMemory(&image, &header, bytes.data(), bytes.size(), &err) != TINYEXR_SUCCESS) {
     FreeEXRHeader(&header);
     fail("bad pixel data");
   }
