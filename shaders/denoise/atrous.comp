@@ -178,41 +178,12 @@ Tap read_tap(ivec2 q) {
 float variance_at(ivec2 q) { return texelFetch(color_in, q, 0).a; }
 #endif
 
-// Every tap of every invocation of this workgroup, and so every prefilter read, lies inside the
-// image: the same for the whole workgroup, so its taps' bounds tests and the prefilter's clamps can
-// be left out (bit-identical; 0.005 ms an iteration at 1080p on an H100, docs/performance.md).
-bool workgroup_taps_inside() {
-  const ivec2 size = ivec2(gl_WorkGroupSize.xy);
-  const ivec2 lo = ivec2(gl_WorkGroupID.xy) * size - 2 * params.step;
-  const ivec2 hi = ivec2(gl_WorkGroupID.xy + 1u) * size - 1 + 2 * params.step;
-  return lo.x >= 0 && lo.y >= 0 && hi.x < int(params.width) && hi.y < int(params.height);
+float prefiltered_variance(ivec2 p) {
+  float v = 0.0;
+  [[unroll]] for (int dy = -1; dy <= 1; ++dy)
+    [[unroll]] for (int dx = -1; dx <= 1; ++dx) v += binomial3(dx) * binomial3(dy) * variance_at(clamp_pixel(p + ivec2(dx, dy)));
+  return v;
 }
-
-// INSIDE: workgroup_taps_inside() holds. Macros, not functions of a bool, so that each body is
-// compiled with its tests gone whatever the compiler inlines.
-#define PREFILTERED_VARIANCE(INSIDE, v) \
-  [[unroll]] for (int dy = -1; dy <= 1; ++dy) \
-    [[unroll]] for (int dx = -1; dx <= 1; ++dx) \
-      v += binomial3(dx) * binomial3(dy) * variance_at(INSIDE ? p + ivec2(dx, dy) : clamp_pixel(p + ivec2(dx, dy)));
-// Sums the taps' h * w colour, (h * w)^2 variance and h * w into sum_c, sum_v and sum_w.
-#define ACCUMULATE_TAPS(INSIDE) \
-  [[unroll]] for (int dy = -2; dy <= 2; ++dy) { \
-    [[unroll]] for (int dx = -2; dx <= 2; ++dx) { \
-      ivec2 q = p + params.step * ivec2(dx, dy); \
-      /* Unrolled, no `continue`: spirv-opt unrolls only loops without one, and NVIDIA's OpenGL */ \
-      /* SPIR-V front end keeps a loop as a conditional loop (docs/performance.md). */ \
-      if (max(abs(dx), abs(dy)) <= radius && (INSIDE || (q.x >= 0 && q.y >= 0 && inside(q, params.width, params.height)))) { \
-        float h = params.kernel == 0u ? b3spline(dx) * b3spline(dy) : 1.0; \
-        const Tap t = (dx == 0 && dy == 0) ? c : read_tap(q); \
-        float w = h; \
-        if (dx != 0 || dy != 0) \
-          w *= atrous_tap_weight(center, lp, t.z, t.n, luminance(t.color.rgb), abs(dx) + abs(dy), params.sigma_n, scales); \
-        sum_c += w * t.color.rgb; \
-        sum_v += w * w * t.color.a; \
-        sum_w += w; \
-      } \
-    } \
-  }
 
 // Returns what the fp16 outputs hold.
 vec4 filter_pixel(ivec2 p) {
@@ -228,23 +199,28 @@ vec4 filter_pixel(ivec2 p) {
   vec4 result = c.color;
   if (hit(center)) {
     float lp = luminance(c.color.rgb);
-    const bool taps_inside = workgroup_taps_inside();
-    float variance = 0.0;
-    if (taps_inside) {
-      PREFILTERED_VARIANCE(true, variance)
-    } else {
-      PREFILTERED_VARIANCE(false, variance)
-    }
-    float std_dev = sqrt(max(variance, 0.0));
+    float std_dev = sqrt(max(prefiltered_variance(p), 0.0));
     const AtrousScales scales = atrous_scales(center, params.step, params.sigma_z, params.sigma_l, std_dev);
-    // Constant bounds (the radius test inside), so that the compiler can unroll and index `scales`.
     int radius = params.kernel == 0u ? 2 : 1;
     vec3 sum_c = vec3(0.0);
     float sum_v = 0.0, sum_w = 0.0;
-    if (taps_inside) {
-      ACCUMULATE_TAPS(true)
-    } else {
-      ACCUMULATE_TAPS(false)
+    // Constant bounds (the radius test inside), so that the compiler can unroll and index `scales`.
+    [[unroll]] for (int dy = -2; dy <= 2; ++dy) {
+      [[unroll]] for (int dx = -2; dx <= 2; ++dx) {
+        ivec2 q = p + params.step * ivec2(dx, dy);
+        // Unrolled, no `continue`: spirv-opt unrolls only loops without one, and NVIDIA's OpenGL
+        // SPIR-V front end keeps a loop as a conditional loop (docs/performance.md).
+        if (max(abs(dx), abs(dy)) <= radius && q.x >= 0 && q.y >= 0 && inside(q, params.width, params.height)) {
+          float h = params.kernel == 0u ? b3spline(dx) * b3spline(dy) : 1.0;
+          const Tap t = (dx == 0 && dy == 0) ? c : read_tap(q);
+          float w = h;
+          if (dx != 0 || dy != 0)
+            w *= atrous_tap_weight(center, lp, t.z, t.n, luminance(t.color.rgb), abs(dx) + abs(dy), params.sigma_n, scales);
+          sum_c += w * t.color.rgb;
+          sum_v += w * w * t.color.a;
+          sum_w += w;
+        }
+      }
     }
     result = vec4(sum_c / sum_w, sum_v / (sum_w * sum_w));
   }
