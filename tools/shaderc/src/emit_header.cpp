@@ -68,11 +68,13 @@ std::string header_text(const Options& o, const Reflection& r, const std::vector
     h << "    {.name = \"" << m.name << "\", .offset = " << m.offset << ", .size = " << m.size << "},\n";
   h << "}};\n\n";
 
-  // Raw string literals: the delimiters cannot occur in GLSL (no ')' is followed by "glsl\""). The
-  // length is written out: a constexpr string_view of a pointer alone counts its characters at
+  // Raw string literals: the delimiters cannot occur in GLSL (no ')' is followed by "glsl\""). Arrays,
+  // their length the array's: a constexpr string_view of a pointer alone counts its characters at
   // compile time, past GCC's constexpr loop limit (262144) for a large program.
-  h << "inline constexpr std::string_view glsl{R\"glsl(" << glsl << ")glsl\", " << glsl.size() << "};\n\n";
-  h << "inline constexpr std::string_view essl{R\"essl(" << essl << ")essl\", " << essl.size() << "};\n\n";
+  h << "inline constexpr char glsl_text[] = R\"glsl(" << glsl << ")glsl\";\n";
+  h << "inline constexpr std::string_view glsl{glsl_text, sizeof glsl_text - 1};\n\n";
+  h << "inline constexpr char essl_text[] = R\"essl(" << essl << ")essl\";\n";
+  h << "inline constexpr std::string_view essl{essl_text, sizeof essl_text - 1};\n\n";
   // Every byte an escape (a \\x escape ends at the next backslash), in pieces the compiler joins.
   h << "inline constexpr std::string_view spirv_gl{";
   static const char* digits = "0123456789abcdef";
