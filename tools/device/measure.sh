@@ -2,7 +2,7 @@
 # The measurements issues 36, 37 and 39 need on the H200, in one device call (prepare.sh first):
 #   bash tools/device/measure.sh [bench] [glossy] [static] [light-exit] [orbit] [sigma] [local-mean] [local-mean-report]
 #                                [local-mean-cost] [local-mean-default]
-#                                [gl-composite] [vk-occupancy] [ab]
+#                                [gl-composite] [vk-occupancy] [atrous] [ab]
 # (no step: bench glossy static). Each step has a time limit and its results go to
 # $OUT/reports.tgz as soon as it ends, so that a run cut short still returns what it measured.
 #   bench       asvgf bench at 1080p: Vulkan (ASVGF_VK_PIPELINE_STATS), OpenGL (ASVGF_GL_PROGRAM_DUMP), ES
@@ -29,6 +29,8 @@
 #               .devbin/asvgf_gaps) against the normal timers, Vulkan and OpenGL, 1080p and 480x270
 #   bvh         path tracing with the BVH builder's leaf rules changed (tools/device/bvh_probe.sh first:
 #               every .devbin/asvgf_bvh<LEAF>x<CAP>) against this build: cornell, textured, many; Vulkan, OpenGL
+#   atrous      this build against every .devbin/asvgf_atrous_* (tools/device/atrous_probe.sh first):
+#               the bench twice each, alternately, Vulkan 1080p; then OpenGL 1080p and Vulkan 4K once
 #   ab          this build against another (.devbin/asvgf_base: `cp` a stripped binary of the commit
 #               before there): the bench twice each, alternately, on each backend in $AB_BACKENDS
 #               (default vulkan; e.g. "vulkan gl"), then the issue-36 quality check,
@@ -247,6 +249,21 @@ EOF_PY
       for backend in vulkan gl gles; do
         echo "-- $backend"; timeout 120 $A bench "${BENCH[@]}" --backend $backend --cache-latency 2>&1 | sed -n '/^copy/p;/cache latency/,$p'
       done | tee $R/cache.txt ;;
+    atrous)
+      probes=(./.devbin/asvgf_atrous_*)
+      [ -x "${probes[0]}" ] || { echo "measure.sh atrous: no .devbin/asvgf_atrous_*: run atrous_probe.sh" >&2; exit 2; }
+      bench() {
+        echo "-- $1 $2 $3"
+        timeout 60 "$1" bench "${BENCH[@]/$size/$3}" --backend "$2" 2>&1 | grep -E "^(atrous|local_mean|composite|denoiser|frame)"
+      }
+      for round in 1 2; do
+        for bin in $A "${probes[@]}"; do bench "$bin" vulkan "$size"; done
+      done | tee $R/atrous-vulkan.txt
+      save
+      for bin in $A "${probes[@]}"; do bench "$bin" gl "$size"; done | tee $R/atrous-gl.txt
+      save
+      for bin in $A "${probes[@]}"; do bench "$bin" vulkan "${MEASURE_SIZE_4K:-3840x2160}"; done | tee $R/atrous-4k.txt
+      save ;;
     ab)
       B=./.devbin/asvgf_base
       [ -x $B ] || { echo "measure.sh ab: $B missing" >&2; exit 2; }
