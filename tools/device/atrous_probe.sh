@@ -3,9 +3,10 @@
 # written: one binary for each patch in tools/device/atrous_probes/, .devbin/asvgf_atrous_<NAME>.
 #   uniform_inside  the taps' bounds tests and the prefilter's clamps behind one uniform test a
 #                   workgroup (whether all its taps lie inside the image), in the one tap loop
-#   pairs           that, and every packed-in iteration filtering two pixels an invocation, p and
-#                   p + (step, 0), from one pass over their 6x5 taps (30 tap loads for two pixels
-#                   instead of 50); its test changes come with it (`git apply` it to land it)
+#   pairs           that, and the default chain's packed-in iterations (atrous.2 to .5 at 1080p)
+#                   filtering two pixels an invocation, p and p + (step, 0), from one pass over
+#                   their 6x5 taps (30 tap loads for two pixels instead of 50); its test changes
+#                   come with it (`git apply` it to land it)
 # Both give frames bit-identical to this build's on lavapipe (the packed-texel, block-sum and
 # frame-hash tests). The sources are patched for each build and restored afterwards (also when a
 # build fails), then the normal binary is rebuilt.
