@@ -703,15 +703,13 @@ TEST_CASE(
     // The first iteration estimates the variance (the variance pass's reference) as it loads its
     // tile, so it inherits that estimate's tolerance (the variance pass's test: fp16_tolerance(80));
     // the a-trous average over normalised weights adds its own rounding, not a larger error. The
-    // reference rounds the estimate to fp16 as the variance pass's image would; the tile keeps fp32,
-    // within the same tolerance.
-    const ImageD color_variance =
-        quantize(ref::variance(quantize(color, F::RGBA16F), quantize(moments, F::RGBA16F), dn_q,
-                               quantize(estimate_albedo, F::RGBA16F),
-                               {settings.sigma_z, settings.sigma_n,
-                                asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height)),
-                                settings.min_history}),
-                 F::RGBA16F);
+    // tile keeps the estimate in fp32, and so does the reference: rounded to fp16 as the variance
+    // pass's image would be, it put the variance channel at 0.98 of the tolerance on these images
+    // and past it (1.02) on others, against 0.31-0.45 unrounded.
+    const ImageD color_variance = ref::variance(
+        quantize(color, F::RGBA16F), quantize(moments, F::RGBA16F), dn_q, quantize(estimate_albedo, F::RGBA16F),
+        {settings.sigma_z, settings.sigma_n,
+         asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height)), settings.min_history});
     DENOISE_CHECK_CLOSE(compare(t1.color, ref::atrous(color_variance, dn_q, params(0)), 4, fp16_tolerance(80)),
                         "first iteration");
     DENOISE_CHECK_CLOSE(compare(t2.color, ref::atrous(t1.color, t1.depth_normal, params(1)), 4, fp16_tolerance(4)),
