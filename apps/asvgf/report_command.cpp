@@ -326,6 +326,7 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
     report::RunResult run;
     run.spec = spec;
     std::vector<float> prev;
+    report::ErrorMap error_map = report::error_map(d.width, d.height);
     for (int f = 0; f < frames; ++f) {
       render::FrameImages img = renderer.render(f);
       const std::size_t gi = std::size_t(group[std::size_t(f)]);
@@ -333,6 +334,7 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
       report::FrameResult fr;
       fr.frame = f;
       fr.relmse = render::relative_mse(img.hdr, ref);
+      if (!spec.accumulation()) report::add_frame(error_map, img.hdr, ref);
       fr.ssim = render::ssim(img.hdr, ref, d.width, d.height);
       fr.temporal =
           f > 0 ? report::temporal_error(img.hdr, prev, ref, reference[std::size_t(group[std::size_t(f) - 1])]) : NAN;
@@ -368,6 +370,8 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
         run.frames[std::size_t(f)].pass_ms = std::move(times[std::size_t(f)].passes);
       }
     }
+    if (!spec.accumulation())
+      run.error_map = report::shrink(error_map, report::shrink_factor(d.width, report::kErrorMapWidth));
     report::summarise(run, d.change);
     d.runs.push_back(std::move(run));
   }

@@ -269,6 +269,11 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
     }
     out << "\n";
   }
+  out << "Each pixel's relMSE, the mean over the frames, for every run but plain accumulation (larger "
+         "images box-averaged to at most "
+      << kErrorMapWidth << " pixels wide), on one log scale of " << kErrorDecades
+      << " decades whose top is the power of ten at or above the 99th percentile of the maps' values:\n\n"
+         "![per-pixel error of every run](error_maps.png)\n\n";
 
   out << "## Per-frame error\n\n![relMSE per frame](relmse_per_frame.png)\n\n"
       << "![temporal error per frame](temporal_per_frame.png)\n\n![SSIM per frame](ssim_per_frame.png)\n\n";

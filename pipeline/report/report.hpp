@@ -13,6 +13,7 @@
 
 #include "asvgf/denoise_settings.hpp"
 #include "renderer/frame_graph.hpp"
+#include "report/error_map.hpp"
 #include "report/pixel_classes.hpp"
 #include "report/plot.hpp"
 #include "report/sequence_metrics.hpp"
@@ -51,11 +52,15 @@ struct FrameResult {
   std::vector<std::pair<std::string, double>> pass_ms;  // in execution order
 };
 
+// The widest error map error_maps.png shows (larger images are box-averaged down to it).
+constexpr std::uint32_t kErrorMapWidth = 320;
+
 struct RunResult {
   RunSpec spec;
   std::vector<FrameResult> frames;
   std::map<int, CropCell> crops;         // display-image crops of the frames the report shows
   std::map<int, CropCell> glossy_crops;  // the same frames where reflections change most (glossy scenes)
+  ErrorMap error_map;                    // per pixel, over the frames; shrunk to at most kErrorMapWidth wide
   // Filled by summarise():
   double mean_relmse = 0, mean_ssim = 0, mean_temporal = 0;
   double mean_relmse_after_change = 0;  // frames from the change on (all frames when none)
@@ -132,7 +137,8 @@ std::string report_csv(const ReportData& data);
 // report.md, linking the plots written by write_plots().
 std::string report_markdown(const ReportData& data, const Headline& headline);
 // error_vs_time.png, relmse_per_frame.png, temporal_per_frame.png, ssim_per_frame.png, crops.png,
-// crops_change.png (when the animation changes), crops_glossy.png (when it changes a glossy scene).
+// crops_change.png (when the animation changes), crops_glossy.png (when it changes a glossy scene),
+// error_maps.png (every run but plain accumulation: where its error is).
 // Returns the file names written.
 std::vector<std::string> write_plots(const ReportData& data, const Headline& headline,
                                      const std::filesystem::path& dir);

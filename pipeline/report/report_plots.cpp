@@ -67,6 +67,59 @@ PlotSpec per_frame_plot(const ReportData& d, const Headline& h, const std::strin
   return p;
 }
 
+// error_maps.png: each run's map (every run but plain accumulation) in a grid, captioned with its
+// name and mean relMSE, on one colour scale, with the scale's bar and decades below.
+Canvas draw_error_maps(const ReportData& d) {
+  std::vector<const RunResult*> runs;
+  std::vector<const ErrorMap*> maps, filtered;  // the scale follows the filtered runs (raw's saturate)
+  for (const auto& r : d.runs) {
+    if (r.spec.accumulation() || r.error_map.values.empty()) continue;
+    runs.push_back(&r), maps.push_back(&r.error_map);
+    if (r.spec.method != frame::Method::Raw) filtered.push_back(&r.error_map);
+  }
+  const double top = error_scale_top(filtered.empty() ? maps : filtered);
+  constexpr int kScale = 2, kGap = 12, kCaption = 44;
+  const std::uint32_t mw = maps.empty() ? 1 : maps.front()->width, mh = maps.empty() ? 1 : maps.front()->height;
+  const int zoom = std::max(1, 192 / int(mw));
+  const int cw = int(mw) * zoom, ch = int(mh) * zoom;
+  const int columns = std::max(1, std::min(4, int(runs.size())));
+  const int rows = (int(runs.size()) + columns - 1) / columns;
+  const int top_y = 60, bar_h = 16;
+  const int width = std::max(kGap + columns * (cw + kGap), 620);
+  Canvas c(std::uint32_t(width), std::uint32_t(top_y + rows * (ch + kCaption + kGap) + bar_h + 60));
+  c.text(10, 10,
+         "per-pixel relMSE, mean over " + std::to_string(d.frames) + " frames (" + std::to_string(d.width) + "x" +
+             std::to_string(d.height) +
+             (mw < d.width ? ", box-averaged to " + std::to_string(mw) + "x" + std::to_string(mh) : std::string()) +
+             ")",
+         {30, 30, 30, 255}, kScale);
+  c.text(10, 32, d.scene + ", one log scale for every map, set by the filtered runs", {110, 110, 110, 255}, kScale);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const int x = kGap + int(i % std::size_t(columns)) * (cw + kGap);
+    const int y = top_y + int(i / std::size_t(columns)) * (ch + kCaption + kGap);
+    c.text(x, y, runs[i]->spec.name, {30, 30, 30, 255}, kScale);
+    c.text(x, y + 20, "mean " + g(runs[i]->mean_relmse), {110, 110, 110, 255}, kScale);
+    c.blit(error_colours(*maps[i], top), mw, mh, x, y + kCaption, zoom);
+  }
+  // The scale: one bar, a tick and a label at each decade.
+  const int bx = kGap, by = top_y + rows * (ch + kCaption + kGap), bw = width - 2 * kGap - 40;
+  for (int x = 0; x < bw; ++x) {
+    const double value = top * std::pow(10.0, kErrorDecades * (double(x) / double(bw - 1) - 1.0));
+    c.fill_rect(bx + x, by, bx + x + 1, by + bar_h, error_colour(value, top));
+  }
+  for (int k = 0; k <= kErrorDecades; ++k) {
+    const int x = bx + (bw - 1) * k / kErrorDecades;
+    c.fill_rect(x, by + bar_h, x + 1, by + bar_h + 5, {30, 30, 30, 255});
+    const std::string label = (k == 0               ? "<= "
+                               : k == kErrorDecades ? ">= "
+                                                    : "") +
+                              g(top * std::pow(10.0, double(k - kErrorDecades)));
+    c.text(std::clamp(x - Canvas::text_width(label, kScale) / 2, bx, width - Canvas::text_width(label, kScale) - 4),
+           by + bar_h + 8, label, {30, 30, 30, 255}, kScale);
+  }
+  return c;
+}
+
 }  // namespace
 
 std::vector<std::string> write_plots(const ReportData& d, const Headline& h, const std::filesystem::path& dir) {
@@ -162,6 +215,7 @@ std::vector<std::string> write_plots(const ReportData& d, const Headline& h, con
       grid("glossy surfaces where the reflections change most (" + d.glossy_crop_note + ")", glossy, frames,
            "crops_glossy.png", d.reference_glossy_crops, &RunResult::glossy_crops);
   }
+  save(draw_error_maps(d), "error_maps.png");
   return written;
 }
 

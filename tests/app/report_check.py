@@ -153,7 +153,7 @@ def check(directory, expected):
             fail("report.md lacks %r" % needle)
     pngs = sorted(f for f in os.listdir(directory) if f.endswith(".png"))
     for want in ["error_vs_time.png", "relmse_per_frame.png", "temporal_per_frame.png", "ssim_per_frame.png",
-                 "crops.png"]:
+                 "crops.png", "error_maps.png"]:
         if want not in pngs:
             fail(want + " is missing")
     for name in pngs:
