@@ -178,10 +178,24 @@ Tap read_tap(ivec2 q) {
 float variance_at(ivec2 q) { return texelFetch(color_in, q, 0).a; }
 #endif
 
-float prefiltered_variance(ivec2 p) {
+// Whether every tap of every invocation of this workgroup, and so every prefilter read, lies inside
+// the image. The same for the whole workgroup, so the taps' bounds tests and the prefilter's clamps
+// below become a uniform branch (docs/performance.md). One loop with the test, not a second copy
+// without: two copies of the unrolled loop doubled lavapipe's compile time.
+bool workgroup_taps_inside() {
+  const ivec2 size = ivec2(gl_WorkGroupSize.xy);
+  const ivec2 lo = ivec2(gl_WorkGroupID.xy) * size - 2 * params.step;
+  const ivec2 hi = ivec2(gl_WorkGroupID.xy + 1u) * size - 1 + 2 * params.step;
+  return lo.x >= 0 && lo.y >= 0 && hi.x < int(params.width) && hi.y < int(params.height);
+}
+
+float prefiltered_variance(ivec2 p, bool taps_inside) {
   float v = 0.0;
   [[unroll]] for (int dy = -1; dy <= 1; ++dy)
-    [[unroll]] for (int dx = -1; dx <= 1; ++dx) v += binomial3(dx) * binomial3(dy) * variance_at(clamp_pixel(p + ivec2(dx, dy)));
+    [[unroll]] for (int dx = -1; dx <= 1; ++dx) {
+      const ivec2 q = p + ivec2(dx, dy);
+      v += binomial3(dx) * binomial3(dy) * variance_at(taps_inside ? q : clamp_pixel(q));
+    }
   return v;
 }
 
@@ -199,7 +213,8 @@ vec4 filter_pixel(ivec2 p) {
   vec4 result = c.color;
   if (hit(center)) {
     float lp = luminance(c.color.rgb);
-    float std_dev = sqrt(max(prefiltered_variance(p), 0.0));
+    const bool taps_inside = workgroup_taps_inside();
+    float std_dev = sqrt(max(prefiltered_variance(p, taps_inside), 0.0));
     const AtrousScales scales = atrous_scales(center, params.step, params.sigma_z, params.sigma_l, std_dev);
     int radius = params.kernel == 0u ? 2 : 1;
     vec3 sum_c = vec3(0.0);
@@ -210,7 +225,8 @@ vec4 filter_pixel(ivec2 p) {
         ivec2 q = p + params.step * ivec2(dx, dy);
         // Unrolled, no `continue`: spirv-opt unrolls only loops without one, and NVIDIA's OpenGL
         // SPIR-V front end keeps a loop as a conditional loop (docs/performance.md).
-        if (max(abs(dx), abs(dy)) <= radius && q.x >= 0 && q.y >= 0 && inside(q, params.width, params.height)) {
+        if (max(abs(dx), abs(dy)) <= radius &&
+            (taps_inside || (q.x >= 0 && q.y >= 0 && inside(q, params.width, params.height)))) {
           float h = params.kernel == 0u ? b3spline(dx) * b3spline(dy) : 1.0;
           const Tap t = (dx == 0 && dy == 0) ? c : read_tap(q);
           float w = h;

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The measurements issues 36, 37 and 39 need on the H200, in one device call (prepare.sh first):
-#   bash tools/device/measure.sh [bench] [glossy] [static] [light-exit] [orbit] [sigma] [local-mean] [local-mean-report]
+#   bash tools/device/measure.sh [bench] [glossy] [glossy-maps] [static] [light-exit] [orbit] [sigma] [local-mean] [local-mean-report]
 #                                [local-mean-cost] [local-mean-default]
 #                                [gl-composite] [vk-occupancy] [atrous] [ab]
 # (no step: bench glossy static). Each step has a time limit and its results go to
 # $OUT/reports.tgz as soon as it ends, so that a run cut short still returns what it measured.
 #   bench       asvgf bench at 1080p: Vulkan (ASVGF_VK_PIPELINE_STATS), OpenGL (ASVGF_GL_PROGRAM_DUMP), ES
 #   glossy      report glossy/boxes-move, 12 frames: the specular split's settings (issue 39)
+#   glossy-maps report glossy/boxes-move and glossy/orbit, 12 frames: where the glossy error lies (error_maps.png)
 #   static      report the static animation, 12 frames: energy bias by sigma_l, history tap and --local-mean
 #   light-exit  the headline, 24 frames, K from plain accumulation at 128, 256 and 512 spp (about 4 minutes)
 #   orbit       report glossy/orbit, 12 frames: the split against one signal with a moving camera
@@ -29,7 +30,7 @@
 #               .devbin/asvgf_gaps) against the normal timers, Vulkan and OpenGL, 1080p and 480x270
 #   bvh         path tracing with the BVH builder's leaf rules changed (tools/device/bvh_probe.sh first:
 #               every .devbin/asvgf_bvh<LEAF>x<CAP>) against this build: cornell, textured, many; Vulkan, OpenGL
-#   atrous      this build against every .devbin/asvgf_atrous_* (tools/device/atrous_probe.sh first):
+#   atrous      this build against every .devbin/asvgf_atrous_* (stripped probe binaries, built first):
 #               the bench twice each, alternately, Vulkan 1080p; then OpenGL 1080p and Vulkan 4K once
 #   ab          this build against another (.devbin/asvgf_base: `cp` a stripped binary of the commit
 #               before there): the bench twice each, alternately, on each backend in $AB_BACKENDS
@@ -80,6 +81,15 @@ for step in "${steps[@]}"; do
         --run 'split-a10=asvgf --specular-split --specular-alpha 0.1' \
         --run 'tap-1=asvgf --history-tap -1' --run 'split-t=asvgf --specular-split --history-tap -1' \
         --out $R/glossy-boxes --quiet 2>&1 | tail -3 ;;
+    glossy-maps)
+      # Issue 39: where the glossy pixels' error lies at 1080p (the report's error_maps.png), with a
+      # still camera and a moving one: one signal, the split, the split with specular sigma_l 32.
+      for anim in boxes-move orbit; do
+        timeout 240 $A report --scene glossy --animation $anim "${HD[@]}" --frames 12 --methods raw,asvgf \
+          --run 'split=asvgf --specular-split' --run 'split-sl32=asvgf --specular-split --specular-sigma-l 32' \
+          --out $R/glossy-maps-$anim --quiet 2>&1 | tail -2
+        save
+      done ;;
     static)
       timeout 180 $A report "${HD[@]}" --animation static --frames 12 --methods raw --run def=asvgf \
         --run 'tap-1=asvgf --history-tap -1' --run 'sl4=asvgf --sigma-l 4' --run 'sl8=asvgf --sigma-l 8' \
@@ -251,10 +261,10 @@ EOF_PY
       done | tee $R/cache.txt ;;
     atrous)
       probes=(./.devbin/asvgf_atrous_*)
-      [ -x "${probes[0]}" ] || { echo "measure.sh atrous: no .devbin/asvgf_atrous_*: run atrous_probe.sh" >&2; exit 2; }
+      [ -x "${probes[0]}" ] || { echo "measure.sh atrous: no .devbin/asvgf_atrous_*: build the probes first" >&2; exit 2; }
       bench() {
         echo "-- $1 $2 $3"
-        timeout 60 "$1" bench "${BENCH[@]/$size/$3}" --backend "$2" 2>&1 | grep -E "^(atrous|local_mean|composite|denoiser|frame)"
+        timeout 60 "$1" bench "${BENCH[@]/$size/$3}" --backend "$2" 2>&1 | grep -E "^(atrous|local_mean|composite|denoiser|frame)|error"
       }
       for round in 1 2; do
         for bin in $A "${probes[@]}"; do bench "$bin" vulkan "$size"; done
