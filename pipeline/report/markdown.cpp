@@ -232,13 +232,32 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
         << g(100.0 * d.glossy_fraction) << "% of the pixels over all frames) and over the matte ones"
         << (d.change ? ", over all frames and from the change on (frame " + std::to_string(d.change->first) + ")" : "")
         << ":\n\n";
-    out << "| run | relMSE glossy | relMSE matte | glossy / matte | glossy from the change on | matte from the change "
-           "on |\n| --- | --- | --- | --- | --- | --- |\n";
-    for (const auto& r : d.runs)
+    // The reference's own noise per class, as for accumulation above: about raw's relMSE (1 spp) / R.
+    // Glossy pixels are the noisier input, so at a small R it takes a larger share of their error.
+    const RunResult* raw = find_run(d, "raw");
+    const double r_spp = double(std::max(1u, d.reference_spp));
+    const double glossy_floor = raw ? raw->mean_relmse_glossy / r_spp : NAN;
+    const double matte_floor = raw ? raw->mean_relmse_matte / r_spp : NAN;
+    auto less_floor = [&](const RunResult& r) {
+      const double gl = r.mean_relmse_glossy - glossy_floor, ma = r.mean_relmse_matte - matte_floor;
+      return gl > 0 && ma > 0 ? g(gl / ma) : std::string("n/a");
+    };
+    out << "| run | relMSE glossy | relMSE matte | glossy / matte |"
+        << (raw ? " the same less the reference's noise |" : "")
+        << " glossy from the change on | matte from the change on |\n| --- | --- | --- | --- |" << (raw ? " --- |" : "")
+        << " --- | --- |\n";
+    for (const auto& r : d.runs) {
       out << "| `" << r.spec.name << "` | " << g(r.mean_relmse_glossy) << " | " << g(r.mean_relmse_matte) << " | "
-          << g(r.mean_relmse_glossy / r.mean_relmse_matte) << " | " << g(r.glossy_after_change) << " | "
-          << g(r.matte_after_change) << " |\n";
+          << g(r.mean_relmse_glossy / r.mean_relmse_matte) << " | ";
+      if (raw) out << (&r == raw ? std::string("") : less_floor(r)) << " | ";
+      out << g(r.glossy_after_change) << " | " << g(r.matte_after_change) << " |\n";
+    }
     out << "\n";
+    if (raw)
+      out << "The reference (" << d.reference_spp << " spp) has noise of its own, about `raw`'s relMSE / "
+          << d.reference_spp << ": " << g(glossy_floor) << " over the glossy pixels and " << g(matte_floor)
+          << " over the matte ones, part of every run's measured error; the fifth column takes it out of both "
+             "before dividing (n/a where a run is within it).\n\n";
     if (!glossy_crop_runs(d).empty())
       out << "Where the reflections change most (" << d.glossy_crop_note
           << "), the frames around the change:\n\n![glossy crops](crops_glossy.png)\n\n";
