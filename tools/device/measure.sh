@@ -2,12 +2,12 @@
 # The measurements issues 36, 37 and 39 need on the H200, in one device call (prepare.sh first):
 #   bash tools/device/measure.sh [bench] [glossy] [glossy-maps] [static] [light-exit] [orbit] [sigma] [local-mean] [local-mean-report]
 #                                [local-mean-cost] [local-mean-default]
-#                                [gl-composite] [vk-occupancy] [atrous] [ab]
+#                                [gl-composite] [vk-occupancy] [atrous] [atrous-quality] [ab]
 # (no step: bench glossy static). Each step has a time limit and its results go to
 # $OUT/reports.tgz as soon as it ends, so that a run cut short still returns what it measured.
 #   bench       asvgf bench at 1080p: Vulkan (ASVGF_VK_PIPELINE_STATS), OpenGL (ASVGF_GL_PROGRAM_DUMP), ES
 #   glossy      report glossy/boxes-move, 12 frames: the specular split's settings (issue 39)
-#   glossy-maps report glossy/boxes-move and glossy/orbit, 12 frames: where the glossy error lies (error_maps.png)
+#   glossy-maps report glossy/boxes-move (and $GLOSSY_MAPS_ANIMATIONS), 12 frames: where the glossy error lies
 #   static      report the static animation, 12 frames: energy bias by sigma_l, history tap and --local-mean
 #   light-exit  the headline, 24 frames, K from plain accumulation at 128, 256 and 512 spp (about 4 minutes)
 #   orbit       report glossy/orbit, 12 frames: the split against one signal with a moving camera
@@ -32,6 +32,8 @@
 #               every .devbin/asvgf_bvh<LEAF>x<CAP>) against this build: cornell, textured, many; Vulkan, OpenGL
 #   atrous      this build against every .devbin/asvgf_atrous_* (stripped probe binaries, built first):
 #               the bench twice each, alternately, Vulkan 1080p; then OpenGL 1080p and Vulkan 4K once
+#   atrous-quality  `asvgf report` at 1080p, light-exit (or $ATROUS_QUALITY_ANIMATIONS), 12 frames, for this build and every
+#               .devbin/asvgf_atrous_* (the issue-36 quality check of the atrous step's probes)
 #   ab          this build against another (.devbin/asvgf_base: `cp` a stripped binary of the commit
 #               before there): the bench twice each, alternately, on each backend in $AB_BACKENDS
 #               (default vulkan; e.g. "vulkan gl"), then the issue-36 quality check,
@@ -82,9 +84,10 @@ for step in "${steps[@]}"; do
         --run 'tap-1=asvgf --history-tap -1' --run 'split-t=asvgf --specular-split --history-tap -1' \
         --out $R/glossy-boxes --quiet 2>&1 | tail -3 ;;
     glossy-maps)
-      # Issue 39: where the glossy pixels' error lies at 1080p (the report's error_maps.png), with a
-      # still camera and a moving one: one signal, the split, the split with specular sigma_l 32.
-      for anim in boxes-move orbit; do
+      # Issue 39: where the glossy pixels' error lies at 1080p (the report's error_maps.png): one
+      # signal, the split, the split with specular sigma_l 32; boxes-move (still camera) unless
+      # GLOSSY_MAPS_ANIMATIONS names others (e.g. "boxes-move orbit").
+      for anim in ${GLOSSY_MAPS_ANIMATIONS:-boxes-move}; do
         timeout 240 $A report --scene glossy --animation $anim "${HD[@]}" --frames 12 --methods raw,asvgf \
           --run 'split=asvgf --specular-split' --run 'split-sl32=asvgf --specular-split --specular-sigma-l 32' \
           --out $R/glossy-maps-$anim --quiet 2>&1 | tail -2
@@ -274,6 +277,19 @@ EOF_PY
       save
       for bin in $A "${probes[@]}"; do bench "$bin" vulkan "${MEASURE_SIZE_4K:-3840x2160}"; done | tee $R/atrous-4k.txt
       save ;;
+    atrous-quality)
+      # The issue-36 quality check for the atrous step's probes: `asvgf report` at 1080p (12 frames,
+      # light-exit, or each of $ATROUS_QUALITY_ANIMATIONS, e.g. "light-exit static") with this build
+      # and each .devbin/asvgf_atrous_*, raw beside it for the reference's noise.
+      for bin in $A ./.devbin/asvgf_atrous_*; do
+        for anim in ${ATROUS_QUALITY_ANIMATIONS:-light-exit}; do
+          out=$R/quality-$anim-$(basename $bin)
+          timeout 150 $bin report "${HD[@]}" --animation $anim --frames 12 --methods raw --run def=asvgf \
+            --out $out --quiet 2>&1 | tail -1
+          echo "$(basename $bin) $anim: $(grep -h '^| `def`' $out/report.md | head -1 | cut -c1-160)"
+          save
+        done
+      done ;;
     ab)
       B=./.devbin/asvgf_base
       [ -x $B ] || { echo "measure.sh ab: $B missing" >&2; exit 2; }
