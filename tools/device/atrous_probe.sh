@@ -1,21 +1,18 @@
 #!/usr/bin/env bash
-# Builds the à-trous probes of `measure.sh atrous` (issue 36), which no GPU could time when they were
-# written: one binary for each patch in tools/device/atrous_probes/, .devbin/asvgf_atrous_<NAME>.
-#   uniform_inside  the taps' bounds tests and the prefilter's clamps behind one uniform test a
-#                   workgroup (whether all its taps lie inside the image), in the one tap loop
-#   pairs           that, and the default chain's packed-in iterations (atrous.2 to .5 at 1080p)
-#                   filtering two pixels an invocation, p and p + (step, 0), from one pass over
-#                   their 6x5 taps (30 tap loads for two pixels instead of 50); its test changes
-#                   come with it (`git apply` it to land it)
-# Both give frames bit-identical to this build's on lavapipe (the packed-texel, block-sum and
-# frame-hash tests). The sources are patched for each build and restored afterwards (also when a
-# build fails), then the normal binary is rebuilt.
+# Builds the à-trous probes of `measure.sh atrous` and `atrous-quality` (issue 36): one binary for
+# each patch in tools/device/atrous_probes/, .devbin/asvgf_atrous_<NAME>.
+#   t13   the B3 kernel's 13 taps with |i| + |j| <= 2 (the default's 21 less the 8 at (2, 1) and
+#         the like: 14.1% of the B3 spline's weight left out, 1.6% in the default); measured 17% faster than 21 at 1080p
+#         with the same error but a lag of 2 frames where 21 has 0 (docs/performance.md, "Fewer taps")
+# The per-tap arithmetic bounds each iteration, so fewer taps are faster; a patch changes the frames
+# (the CPU reference with them: the frame-hash test is the one that fails), so `atrous-quality`
+# measures what it costs at 1080p. The sources are patched for each
+# build and restored afterwards (also when a build fails), then the normal binary is rebuilt.
 #   bash tools/device/atrous_probe.sh
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 source tools/device/patched_sources.sh
-keep_sources shaders/denoise/atrous.comp shaders/denoise/shaders.cmake pipeline/denoiser/passes/atrous.cpp \
-  tests/pipeline/denoise_passes_test.cpp
+keep_sources shaders/denoise/atrous.comp pipeline/cpu_oracle/denoise_reference.cpp
 mkdir -p .devbin
 for patch in tools/device/atrous_probes/*.patch; do
   name=$(basename "$patch" .patch)
