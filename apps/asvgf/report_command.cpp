@@ -326,7 +326,7 @@ report::SceneReport report_scene(const ReportOptions& o, std::vector<report::Run
     report::RunResult run;
     run.spec = spec;
     std::vector<float> prev;
-    report::ErrorMap error_map = report::error_map(d.width, d.height);
+    report::ErrorMap error_map = spec.accumulation() ? report::ErrorMap{} : report::error_map(d.width, d.height);
     for (int f = 0; f < frames; ++f) {
       render::FrameImages img = renderer.render(f);
       const std::size_t gi = std::size_t(group[std::size_t(f)]);

@@ -3,7 +3,7 @@
 //
 // Defaults and their sources (the papers and implementations named; README "Denoiser parameters"):
 //   alpha 0.2, moments_alpha 0.2, atrous_iterations 5, sigma_z 1, sigma_n 128, B3-spline kernel (less
-//   its four corner taps: measured as fast and as good, docs/performance.md),
+//   its four corner taps: 7% faster at 1080p with the same error, docs/performance.md "Fewer taps"),
 //   history_tap 0, min_history 4: SVGF paper (Schied et al. 2017) and Falcor's SVGF pass.
 //   sigma_l 0, by the image's size: the paper's 4 up to 256x256 pixels, 12 from 768x768 (measured;
 //   see luminance_sigma).
