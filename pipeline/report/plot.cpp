@@ -7,7 +7,6 @@
 namespace asvgf::report {
 namespace {
 
-constexpr Rgba kInk{30, 30, 30, 255};
 constexpr Rgba kGrid{225, 225, 225, 255};
 constexpr Rgba kShade{255, 230, 190, 255};
 constexpr int kText = 2;  // text scale: stb_easy_font is ~7 px high
@@ -169,7 +168,7 @@ Canvas draw_plot(const PlotSpec& spec, std::uint32_t width, std::uint32_t height
 
   int line_y = 12;
   c.text(8, line_y, spec.title, kInk, kText);
-  if (!spec.subtitle.empty()) c.text(8, line_y += 22, spec.subtitle, {110, 110, 110, 255}, kText);
+  if (!spec.subtitle.empty()) c.text(8, line_y += 22, spec.subtitle, kSubtleInk, kText);
   if (!spec.note.empty()) c.text(8, line_y += 22, spec.note, {170, 40, 40, 255}, kText);
   c.text((x0 + x1 - Canvas::text_width(spec.x_label, kText)) / 2, y1 + 36, spec.x_label, kInk, kText);
   c.text(8, y0 - 20, spec.y_label, kInk, kText);

@@ -32,6 +32,10 @@ struct PlotSpec {
   bool zeros_on_edge = false;  // log y: exact zeros drawn on the bottom edge (say so in `note`)
 };
 
+// Text and axis colour of every plot, and the grey of secondary text.
+inline constexpr Rgba kInk{30, 30, 30, 255};
+inline constexpr Rgba kSubtleInk{110, 110, 110, 255};
+
 // The i-th colour and marker of a fixed palette (Tableau 10).
 Rgba palette_color(std::size_t i);
 Marker palette_marker(std::size_t i);

@@ -73,7 +73,7 @@ Canvas draw_error_maps(const ReportData& d) {
   std::vector<const RunResult*> runs;
   std::vector<const ErrorMap*> maps, filtered;  // the scale follows the filtered runs (raw's saturate)
   for (const auto& r : d.runs) {
-    if (r.spec.accumulation() || r.error_map.values.empty()) continue;
+    if (r.error_map.values.empty()) continue;  // plain accumulation has none
     runs.push_back(&r), maps.push_back(&r.error_map);
     if (r.spec.method != frame::Method::Raw) filtered.push_back(&r.error_map);
   }
@@ -92,13 +92,13 @@ Canvas draw_error_maps(const ReportData& d) {
              std::to_string(d.height) +
              (mw < d.width ? ", box-averaged to " + std::to_string(mw) + "x" + std::to_string(mh) : std::string()) +
              ")",
-         {30, 30, 30, 255}, kScale);
-  c.text(10, 32, d.scene + ", one log scale for every map, set by the filtered runs", {110, 110, 110, 255}, kScale);
+         kInk, kScale);
+  c.text(10, 32, d.scene + ", one log scale for every map, set by the filtered runs", kSubtleInk, kScale);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const int x = kGap + int(i % std::size_t(columns)) * (cw + kGap);
     const int y = top_y + int(i / std::size_t(columns)) * (ch + kCaption + kGap);
-    c.text(x, y, runs[i]->spec.name, {30, 30, 30, 255}, kScale);
-    c.text(x, y + 20, "mean " + g(runs[i]->mean_relmse), {110, 110, 110, 255}, kScale);
+    c.text(x, y, runs[i]->spec.name, kInk, kScale);
+    c.text(x, y + 20, "mean " + g(runs[i]->mean_relmse), kSubtleInk, kScale);
     c.blit(error_colours(*maps[i], top), mw, mh, x, y + kCaption, zoom);
   }
   // The scale: one bar, a tick and a label at each decade.
@@ -109,13 +109,13 @@ Canvas draw_error_maps(const ReportData& d) {
   }
   for (int k = 0; k <= kErrorDecades; ++k) {
     const int x = bx + (bw - 1) * k / kErrorDecades;
-    c.fill_rect(x, by + bar_h, x + 1, by + bar_h + 5, {30, 30, 30, 255});
+    c.fill_rect(x, by + bar_h, x + 1, by + bar_h + 5, kInk);
     const std::string label = (k == 0               ? "<= "
                                : k == kErrorDecades ? ">= "
                                                     : "") +
                               g(top * std::pow(10.0, double(k - kErrorDecades)));
     c.text(std::clamp(x - Canvas::text_width(label, kScale) / 2, bx, width - Canvas::text_width(label, kScale) - 4),
-           by + bar_h + 8, label, {30, 30, 30, 255}, kScale);
+           by + bar_h + 8, label, kInk, kScale);
   }
   return c;
 }
