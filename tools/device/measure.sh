@@ -2,7 +2,7 @@
 # The measurements issues 36, 37 and 39 need on the H200, in one device call (prepare.sh first):
 #   bash tools/device/measure.sh [bench] [glossy] [glossy-maps] [static] [light-exit] [orbit] [sigma] [local-mean] [local-mean-report]
 #                                [local-mean-cost] [local-mean-default]
-#                                [gl-composite] [vk-occupancy] [atrous] [atrous-quality] [ab]
+#                                [gl-composite] [vk-occupancy] [atrous] [atrous-quality] [glossy-probe] [ab]
 # (no step: bench glossy static). Each step has a time limit and its results go to
 # $OUT/reports.tgz as soon as it ends, so that a run cut short still returns what it measured.
 #   bench       asvgf bench at 1080p: Vulkan (ASVGF_VK_PIPELINE_STATS), OpenGL (ASVGF_GL_PROGRAM_DUMP), ES
@@ -32,8 +32,11 @@
 #               every .devbin/asvgf_bvh<LEAF>x<CAP>) against this build: cornell, textured, many; Vulkan, OpenGL
 #   atrous      this build against every .devbin/asvgf_atrous_* (stripped probe binaries, built first):
 #               the bench twice each, alternately, Vulkan 1080p; then OpenGL 1080p and Vulkan 4K once
-#   atrous-quality  `asvgf report` at 1080p, light-exit (or $ATROUS_QUALITY_ANIMATIONS), 12 frames, for this build and every
+#   atrous-quality  `asvgf report` at 1080p, light-exit (or $ATROUS_QUALITY_ANIMATIONS), 12 frames (or
+#               $ATROUS_QUALITY_FRAMES; the issue's lag is measured over 24), for this build and every
 #               .devbin/asvgf_atrous_* (the issue-36 quality check of the atrous step's probes)
+#   glossy-probe  report glossy/boxes-move and glossy/orbit (or $GLOSSY_PROBE_ANIMATIONS), 12 frames, one
+#               signal and the split, for this build and every .devbin/asvgf_glossy_* (build_probes.sh glossy)
 #   ab          this build against another (.devbin/asvgf_base: `cp` a stripped binary of the commit
 #               before there): the bench twice each, alternately, on each backend in $AB_BACKENDS
 #               (default vulkan; e.g. "vulkan gl"), then the issue-36 quality check,
@@ -284,9 +287,20 @@ EOF_PY
       for bin in $A ./.devbin/asvgf_atrous_*; do
         for anim in ${ATROUS_QUALITY_ANIMATIONS:-light-exit}; do
           out=$R/quality-$anim-$(basename $bin)
-          timeout 150 $bin report "${HD[@]}" --animation $anim --frames 12 --methods raw --run def=asvgf \
+          timeout 240 $bin report "${HD[@]}" --animation $anim --frames ${ATROUS_QUALITY_FRAMES:-12} --methods raw --run def=asvgf \
             --out $out --quiet 2>&1 | tail -1
           echo "$(basename $bin) $anim: $(grep -h '^| `def`' $out/report.md | head -1 | cut -c1-160)"
+          save
+        done
+      done ;;
+    glossy-probe)
+      # Issue 39: each glossy probe binary against this build, one signal and the split, with error maps.
+      for bin in $A ./.devbin/asvgf_glossy_*; do
+        for anim in ${GLOSSY_PROBE_ANIMATIONS:-boxes-move orbit}; do
+          out=$R/glossy-probe-$anim-$(basename $bin)
+          timeout 240 $bin report --scene glossy --animation $anim "${HD[@]}" --frames 12 --methods raw \
+            --run def=asvgf --run 'split=asvgf --specular-split' --out $out --quiet 2>&1 | tail -1
+          echo "$(basename $bin) $anim:"; grep -h '^| `\(def\|split\)`' $out/report.md | cut -c1-200
           save
         done
       done ;;

@@ -1,4 +1,4 @@
-# Sourced by the probe builders (bvh_probe.sh, resident_probe.sh, timer_gaps_probe.sh): keeps
+# Sourced by the probe builders (build_probes.sh, bvh_probe.sh, resident_probe.sh, timer_gaps_probe.sh): keeps
 # copies of the sources a probe patches, puts them back on exit (also when a build fails) and
 # rebuilds the normal binary.
 #   keep_sources FILE...   save FILEs; restored when the script exits

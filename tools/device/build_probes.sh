@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Builds the probe binaries of one family for measure.sh: .devbin/asvgf_<FAMILY>_<NAME> from each
+# tools/device/<FAMILY>_probes/<NAME>.patch. The sources a family's patches touch are saved,
+# patched for each build and restored afterwards (also when a build fails), then the normal binary
+# is rebuilt.
+#   bash tools/device/build_probes.sh atrous   # measure.sh atrous, atrous-quality (issue 36)
+#   bash tools/device/build_probes.sh glossy   # measure.sh glossy-probe (issue 39)
+# atrous:
+#   t13   the B3 kernel's 13 taps with |i| + |j| <= 2 (the default's 21 less the 8 at (2, 1) and
+#         the like: 14.1% of the B3 spline's weight left out, 1.6% in the default); measured 17% faster
+#         than 21 at 1080p with the same error (docs/performance.md, "Fewer taps")
+#   A patch changes the frames (the CPU reference with them: the frame-hash test is the one that
+#   fails), so `atrous-quality` measures what it costs at 1080p.
+# glossy:
+#   speclm  the specular chain of --specular-split with its own local-mean correction (its tapped
+#           history's and its result's), as the diffuse chain has (docs/quality.md)
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+source tools/device/patched_sources.sh
+family=${1:?usage: build_probes.sh FAMILY (a folder tools/device/FAMILY_probes)}
+patches=(tools/device/"${family}"_probes/*.patch)
+[ -e "${patches[0]}" ] || { echo "build_probes.sh: no patches in tools/device/${family}_probes" >&2; exit 1; }
+mapfile -t touched < <(sed -n 's|^+++ b/||p' "${patches[@]}" | sort -u)
+keep_sources "${touched[@]}"
+mkdir -p .devbin
+for patch in "${patches[@]}"; do
+  name=$(basename "$patch" .patch)
+  reset_sources
+  git apply "$patch" || { echo "build_probes.sh: $patch no longer applies: update it" >&2; exit 1; }
+  cmake --build --preset default > /dev/null
+  strip -o ".devbin/asvgf_${family}_$name" build/bin/asvgf
+  echo "build_probes.sh: .devbin/asvgf_${family}_$name"
+done
