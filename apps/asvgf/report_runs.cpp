@@ -28,8 +28,8 @@ std::vector<report::RunSpec> builtin_runs(std::uint32_t max_accumulation_spp) {
     s.denoise.alpha = 0.05f;
     s.summarised = false;
   });
-  add("svgf", "SVGF: constant α 0.2, 5 à-trous iterations (B3, 21 taps)", Method::Svgf, none);
-  add("asvgf", "A-SVGF: adaptive α, 5 à-trous iterations (B3, 21 taps)", Method::Asvgf, none);
+  add("svgf", "SVGF: constant α 0.2, 5 à-trous iterations (B3, 13 taps)", Method::Svgf, none);
+  add("asvgf", "A-SVGF: adaptive α, 5 à-trous iterations (B3, 13 taps)", Method::Asvgf, none);
   add("asvgf-reproj", "A-SVGF, gradient from reprojected noisy luminance (no re-shading; Q2RTX's LF)", Method::Asvgf,
       [](report::RunSpec& s) { s.denoise.gradient_source = asvgf::GradientSource::Reprojected; });
   add("asvgf-nodemod", "A-SVGF filtering radiance with the albedo in it (--no-demodulation)", Method::Asvgf,

@@ -116,7 +116,8 @@ void add_denoise_options(CLI::App& cmd, SceneOptions& o) {
   add_setting_option(cmd, "--sigma-n", d.sigma_n, "sigma_n", "Normal edge-stopping exponent (SVGF 128)");
   add_setting_option(cmd, "--sigma-l", d.sigma_l, "sigma_l",
                      "Luminance edge-stopping (SVGF 4; 0: by the image's size, 4 up to 256x256, 12 from 768x768)");
-  cmd.add_option("--kernel", o.kernel, "A-trous kernel: b3spline (the paper's 5x5 less its corners) or box (3x3, seed)")
+  cmd.add_option("--kernel", o.kernel,
+                 "A-trous kernel: b3spline (the paper's 5x5, its 13 taps with |i| + |j| <= 2) or box (3x3, seed)")
       ->check(CLI::IsMember({"b3spline", "box"}))
       ->capture_default_str();
   add_setting_option(cmd, "--gradient-iterations", d.gradient_iterations, "gradient_iterations",

@@ -355,7 +355,7 @@ ImageD atrous(const ImageD& in, const ImageD& dn, const AtrousParams& params) {
         for (int dy = -radius; dy <= radius; ++dy)
           for (int dx = -radius; dx <= radius; ++dx) {
             const int qx = x + params.step * dx, qy = y + params.step * dy;
-            if (!in.inside(qx, qy) || (std::abs(dx) == 2 && std::abs(dy) == 2)) continue;
+            if (!in.inside(qx, qy) || std::abs(dx) + std::abs(dy) > 2) continue;
             const double hk = params.kernel == 0 ? b3spline(dx) * b3spline(dy) : 1.0;
             double wgt = hk;
             if (dx != 0 || dy != 0) {

@@ -86,7 +86,7 @@ ImageD variance(const ImageD& integrated, const ImageD& moments, const ImageD& d
 
 struct AtrousParams {
   int step = 1;
-  int kernel = 0;  // 0: B3 spline, 5x5 less its corners (atrous.comp), 1: 3x3 box
+  int kernel = 0;  // 0: B3 spline, its 13 taps with |i| + |j| <= 2 (atrous.comp), 1: 3x3 box
   double sigma_z = 1, sigma_n = 128, sigma_l = 4;
 };
 // atrous.comp: one iteration.

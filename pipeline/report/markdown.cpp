@@ -136,8 +136,8 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
     out << "Not run (see --methods).\n\n";
   } else {
     out << "The seed filters with a 3x3 box kernel and 9 iterations and shows 15 breaking the structure; "
-           "`asvgf-box9` and `asvgf-box15` use that kernel, `asvgf` is the default (the 5x5 B3 spline less its "
-           "corners, 5 iterations). "
+           "`asvgf-box9` and `asvgf-box15` use that kernel, `asvgf` is the default (the 5x5 B3 spline's 13 "
+           "taps with |i| + |j| <= 2, 5 iterations). "
            "Iteration i samples 2^i pixels apart: at "
         << d.width << "x" << d.height << " iterations past "
         << int(std::ceil(std::log2(double(std::max(d.width, d.height))))) << " reach beyond the image.\n\n";

@@ -5,12 +5,9 @@
 # is rebuilt.
 #   bash tools/device/build_probes.sh atrous   # measure.sh atrous, atrous-quality (issue 36)
 #   bash tools/device/build_probes.sh glossy   # measure.sh glossy-probe (issue 39)
-# atrous:
-#   t13   the B3 kernel's 13 taps with |i| + |j| <= 2 (the default's 21 less the 8 at (2, 1) and
-#         the like: 14.1% of the B3 spline's weight left out, 1.6% in the default); measured 17% faster
-#         than 21 at 1080p with the same error (docs/performance.md, "Fewer taps")
-#   A patch changes the frames (the CPU reference with them: the frame-hash test is the one that
-#   fails), so `atrous-quality` measures what it costs at 1080p.
+# atrous: none now (the last, 13 taps with |i| + |j| <= 2, became the default kernel: docs/performance.md,
+#   "Fewer taps"). A patch changes the frames (the CPU reference with them: the frame-hash test is
+#   the one that fails), so `atrous-quality` measures what it costs at 1080p.
 # glossy:
 #   speclm  the specular chain of --specular-split with its own local-mean correction (its tapped
 #           history's and its result's), as the diffuse chain has (docs/quality.md)
