@@ -87,12 +87,13 @@ AtrousScales atrous_scales(Surface p, int step, float sigma_z, float sigma_l, fl
 // One return: an early one becomes a one-trip loop when inlined, which NVIDIA's OpenGL SPIR-V front
 // end compiles as a loop (docs/performance.md).
 float atrous_tap_weight(Surface p, float lp, float zq, vec3 nq, float lq, int l1, float sigma_n, AtrousScales s) {
+  // The special cases as one clamp and one select (fewer instructions a tap: docs/performance.md):
+  // a cosine rounded above 1 counts as 1, and log2 never sees 0 or less (undefined in GLSL).
   const float cos_pq = dot(p.n, nq);
-  // No hit, or a normal facing away: pow(0, sigma_n) = 0 (pow(c, 0) = 1).
-  const bool zero = !(zq > 0.0) || (sigma_n != 0.0 && !(cos_pq > 0.0));
-  // cos >= 1 (equal normals, to rounding) gives 0 even for an infinite sigma_n (pow(1, inf) = 1).
-  const float log2_wn = sigma_n == 0.0 || cos_pq >= 1.0 ? 0.0 : sigma_n * log2(cos_pq);
-  return zero ? 0.0 : exp2(log2_wn - abs(p.z - zq) * s.depth[l1 - 1] - abs(lp - lq) * s.luminance);
+  const float log2_wn = sigma_n * log2(clamp(cos_pq, 1e-30, 1.0));
+  const float w = exp2(log2_wn - abs(p.z - zq) * s.depth[l1 - 1] - abs(lp - lq) * s.luminance);
+  // No hit, or a normal facing away: pow(0, sigma_n) = 0 (pow(c, 0) = 1). NaN compares false: 0.
+  return zq > 0.0 && (cos_pq > 0.0 || sigma_n == 0.0) ? w : 0.0;
 }
 
 // 1D kernel taps: B3 spline (1/16, 1/4, 3/8, 1/4, 1/16) for |i| <= 2; box of 3 for |i| <= 1.

@@ -568,41 +568,49 @@ TEST_CASE("denoise passes: add_denoiser refuses a specular signal without its sp
                   std::invalid_argument);
 }
 
-TEST_CASE("denoise passes: atrous pass matches the CPU reference (B3 spline and box, steps 1, 2, 4, history tap)") {
+// sigma_n 0 and 0.01 besides the default 128: the tap weight's special cases (a normal facing away
+// weighs 0 for any sigma_n > 0, everything 1 for 0), which the shader folds into a clamp and a select.
+TEST_CASE(
+    "denoise passes: atrous pass matches the CPU reference (B3 spline and box, steps 1, 2, 4, history tap, sigma_n "
+    "128, 0 and 0.01 with normals facing away)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   for (const auto kernel : {asvgf::AtrousKernel::B3Spline, asvgf::AtrousKernel::Box}) {
-    asvgf::DenoiseSettings settings;
-    settings.kernel = kernel;
-    for (const auto& size : kSizes) {
-      const int w = size[0], h = size[1];
-      Random r(71u + static_cast<std::uint32_t>(w));
-      const ImageD dn = random_depth_normal(r, w, h);
-      const ImageD color = random_color(r, w, h, 0, 4, 0.5);
-      for (int iteration = 0; iteration < 3; ++iteration) {
-        CAPTURE(static_cast<int>(kernel));
-        CAPTURE(w);
-        CAPTURE(iteration);
-        const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
-        GraphHarness harness(*device);
-        RenderGraph g;
-        const auto out = g.add_image("atrous_out", uw, uh, F::RGBA16F);
-        passes::AtrousResources res{harness.input(g, "color_in", color, F::RGBA16F),
-                                    harness.input(g, "depth_normal", depth_normal_texels(dn), F::RGBA16Uint), out,
-                                    std::nullopt};
-        const bool tap = iteration == 1;
-        if (tap) res.color_history = g.add_image("color_history", uw, uh, F::RGBA16F, Lifetime::Persistent);
-        passes::add_atrous(g, pipelines, res, iteration, settings);
-        ImageD got, history;
-        harness.readback(g, out, &got);
-        if (tap) harness.readback(g, *res.color_history, &history);
-        harness.run(g);
-        const ImageD want =
-            ref::atrous(quantize(color, F::RGBA16F), quantize(dn, F::RGBA32F),
-                        {1 << iteration, static_cast<int>(kernel), settings.sigma_z, settings.sigma_n,
-                         asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height))});
-        DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(4)), "atrous");
-        if (tap) CHECK(history.data == got.data);
+    for (const float sigma_n : {128.0f, 0.0f, 0.01f}) {
+      CAPTURE(sigma_n);
+      asvgf::DenoiseSettings settings;
+      settings.kernel = kernel;
+      settings.sigma_n = sigma_n;
+      for (const auto& size : kSizes) {
+        const int w = size[0], h = size[1];
+        Random r(71u + static_cast<std::uint32_t>(w));
+        const ImageD dn = random_depth_normal(r, w, h);
+        const ImageD color = random_color(r, w, h, 0, 4, 0.5);
+        for (int iteration = 0; iteration < 3; ++iteration) {
+          CAPTURE(static_cast<int>(kernel));
+          CAPTURE(w);
+          CAPTURE(iteration);
+          const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
+          GraphHarness harness(*device);
+          RenderGraph g;
+          const auto out = g.add_image("atrous_out", uw, uh, F::RGBA16F);
+          passes::AtrousResources res{harness.input(g, "color_in", color, F::RGBA16F),
+                                      harness.input(g, "depth_normal", depth_normal_texels(dn), F::RGBA16Uint), out,
+                                      std::nullopt};
+          const bool tap = iteration == 1;
+          if (tap) res.color_history = g.add_image("color_history", uw, uh, F::RGBA16F, Lifetime::Persistent);
+          passes::add_atrous(g, pipelines, res, iteration, settings);
+          ImageD got, history;
+          harness.readback(g, out, &got);
+          if (tap) harness.readback(g, *res.color_history, &history);
+          harness.run(g);
+          const ImageD want =
+              ref::atrous(quantize(color, F::RGBA16F), quantize(dn, F::RGBA32F),
+                          {1 << iteration, static_cast<int>(kernel), settings.sigma_z, settings.sigma_n,
+                           asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height))});
+          DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(4)), "atrous");
+          if (tap) CHECK(history.data == got.data);
+        }
       }
     }
   }
