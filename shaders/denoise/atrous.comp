@@ -2,8 +2,9 @@
 // eq. 1-4; the seed's w_z, w_n, w_l). Taps at p + step * (i, j): the 13 of the paper's 5x5
 // B3-spline kernel with |i| + |j| <= 2 (the 12 left out hold 14.1% of its weight, and the per-tap
 // arithmetic bounds the pass: 17% faster at 1080p than 21 taps, error unchanged, docs/performance.md,
-// "Fewer taps") or a 3x3 box (seed), chosen by `kernel`. Colour is averaged with h * w; the variance in alpha with
-// (h * w)^2 / (sum h * w)^2. The luminance weight uses the 3x3-binomial-prefiltered variance.
+// "Fewer taps") or a 3x3 box (seed), chosen by `kernel`. Colour is averaged with h * w; the
+// variance in alpha with (h * w)^2 / (sum h * w)^2. The luminance weight uses the
+// 3x3-binomial-prefiltered variance.
 // Variants: PACKED_IN reads the packed colour texels (common/filter_texel.glsl) the previous
 // iteration wrote to a storage buffer, one per pixel in rows, and the packed surface texels the
 // first wrote to another, instead of an RGBA16F colour and depth_normal per tap; PACKED_OUT writes
