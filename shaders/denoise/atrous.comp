@@ -228,8 +228,11 @@ vec4 filter_pixel(ivec2 p) {
         ivec2 q = p + params.step * ivec2(dx, dy);
         // Unrolled, no `continue`: spirv-opt unrolls only loops without one, and NVIDIA's OpenGL
         // SPIR-V front end keeps a loop as a conditional loop (docs/performance.md).
-        if (max(abs(dx), abs(dy)) <= radius && abs(dx) + abs(dy) <= 2 &&
-            (taps_inside || (q.x >= 0 && q.y >= 0 && inside(q, params.width, params.height)))) {
+        // Each axis tested on the side its offset goes (the step is positive, p inside), so that
+        // unrolling leaves at most two comparisons a tap.
+        const bool x_inside = dx == 0 || (dx < 0 ? q.x >= 0 : q.x < int(params.width));
+        const bool y_inside = dy == 0 || (dy < 0 ? q.y >= 0 : q.y < int(params.height));
+        if (max(abs(dx), abs(dy)) <= radius && abs(dx) + abs(dy) <= 2 && (taps_inside || (x_inside && y_inside))) {
           float h = params.kernel == 0u ? b3spline(dx) * b3spline(dy) : 1.0;
           const Tap t = (dx == 0 && dy == 0) ? c : read_tap(q);
           float w = h;
