@@ -5,10 +5,11 @@
 # is rebuilt.
 #   bash tools/device/build_probes.sh atrous   # measure.sh atrous, atrous-quality (issue 36)
 #   bash tools/device/build_probes.sh glossy   # measure.sh glossy-probe (issue 39)
-# atrous: none now (13 taps, `nozero` and `bounds2` became the defaults, `nseries` and `novarpf` were
-#   measured and dropped: docs/performance.md, "Fewer taps", "What a tap's instructions cost"). A
-#   patch that changes the frames (the CPU reference with them: the frame-hash test is the one that
-#   fails) needs `atrous-quality` to measure what it costs at 1080p.
+# atrous: none now (13 taps, `nozero`, `bounds2` and `boxsep` became the defaults, `nseries`,
+#   `novarpf` and `box4` were measured and dropped: docs/performance.md, "Fewer taps", "What a tap's
+#   instructions cost", "The local mean's box over blocks, separable"). A patch that changes the
+#   frames (the CPU reference with them: the frame-hash test is the one that fails) needs
+#   `atrous-quality` to measure what it costs at 1080p.
 # glossy (docs/quality.md, "The specular chain's own correction at 1080p, and a stricter gate"):
 #   speclm  the specular chain of --specular-split with its own local-mean correction (its tapped
 #           history's and its result's), as the diffuse chain has: at 1080p the split's glossy

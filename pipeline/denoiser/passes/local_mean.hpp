@@ -38,6 +38,8 @@ struct LocalMeanBlocks {
   int radius = 0;
 };
 LocalMeanBlocks local_mean_blocks(int k);
+// The largest radius local_mean.comp's box pass holds in shared memory (its kMaxRadius): k 255.
+inline constexpr int kLocalMeanMaxRadius = 15;
 
 // The images a correction declares, one texel a block, RGBA32F (OpenGL ES has no RG32F storage
 // images): the block sums (x: temporal, y: filtered, z: temporal squared, w: pixels) and the
