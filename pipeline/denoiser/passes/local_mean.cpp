@@ -48,8 +48,8 @@ LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelin
   const LocalMeanBlocks b = local_mean_blocks(k);
   if (b.radius > kLocalMeanMaxRadius)
     throw std::invalid_argument("add_local_mean: window " + std::to_string(k) + " needs " + std::to_string(b.radius) +
-                                " blocks a side, more than the box pass holds (" +
-                                std::to_string(kLocalMeanMaxRadius) + ")");
+                                " blocks a side, more than the box pass holds (" + std::to_string(kLocalMeanMaxRadius) +
+                                ")");
   const Uniforms u{width, height, b.radius, r.gated ? 1u : 0u, b.block};
   const graph::ResourceId sums =
       r.block_sums ? *r.block_sums : add_local_mean_sums_image(graph, r.name, width, height, k);
