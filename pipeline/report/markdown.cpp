@@ -164,10 +164,12 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
            "the same, measured: relMSE per frame and mean radiance against the reference's.\n\n";
     md.frame_table(alpha_runs, d.change->first - 1, std::min(d.change->last + 6, d.frames - 1));
     for (const RunResult* r : alpha_runs)
-      if (r->lag.measured)
+      if (r->lag.measured) {
+        const std::string margin = lag_margin_text(r->lag);
         out << "- `" << r->spec.name << "`: steady relMSE before the change " << g(r->lag.steady_error)
             << ", threshold " << g(r->lag.threshold) << ", peak after it " << g(r->lag.peak_error) << ", lag "
-            << lag_text(r->lag, d.frames) << " frames.\n";
+            << lag_text(r->lag, d.frames) << " frames" << (margin.empty() ? "" : " (" + margin + ")") << ".\n";
+      }
     out << "\n";
     if (!change_crop_runs(d).empty()) out << "![crops while the scene changes](crops_change.png)\n\n";
   }
@@ -337,7 +339,9 @@ std::string report_markdown(const ReportData& d, const Headline& headline) {
          "- **lag**: the change starts at frame c, the first frame whose scene state differs from the one before. "
          "The threshold is twice the method's mean relMSE over frames 1..c−1 (its error before the change; frame 0 "
          "has no history). The lag is the number of frames from c until the relMSE is back under the threshold and "
-         "stays there to the last frame; \"> n\" when it is still above at the last frame.\n"
+         "stays there to the last frame; \"> n\" when it is still above at the last frame. The lag's details give "
+         "how near the deciding frames came to the threshold (error / threshold): near 1, a change of that size "
+         "in one frame's error moves the lag by whole frames.\n"
          "- **GPU time**: from the HAL's timestamps around every pass (Renderer::timings()); whole frame = sum of "
          "its passes; the table gives the median over the frames. "
       << (d.timed_separately ? "Each run's frames were rendered a second time for timing, back to back after half a "

@@ -55,6 +55,11 @@ Lag measure_lag(const std::vector<double>& error, std::optional<ChangeWindow> ch
   for (int t = int(error.size()) - 1; t >= c && error[std::size_t(t)] <= lag.threshold; --t) settled = t;
   if (settled < int(error.size())) lag.frames = settled - c;
   for (std::size_t t = std::size_t(c); t < error.size(); ++t) lag.peak_error = std::max(lag.peak_error, error[t]);
+  if (lag.threshold > 0) {
+    for (std::size_t t = std::size_t(settled); t < error.size(); ++t)
+      lag.settled_ratio = std::max(lag.settled_ratio.value_or(0.0), error[t] / lag.threshold);
+    if (settled > c) lag.last_over_ratio = error[std::size_t(settled - 1)] / lag.threshold;
+  }
   return lag;
 }
 

@@ -35,6 +35,10 @@ struct Lag {
   double steady_error = 0, threshold = 0;
   std::optional<int> frames;
   double peak_error = 0;  // worst error at or after the change
+  // How near the threshold the frames that decide the lag came, as error / threshold: the largest
+  // from the lag's end on (under 1), and the last frame over it (where the lag is not 0). A ratio
+  // near 1 means a change of that size in one frame's error moves the lag.
+  std::optional<double> settled_ratio, last_over_ratio;
 };
 Lag measure_lag(const std::vector<double>& error, std::optional<ChangeWindow> change);
 

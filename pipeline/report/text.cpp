@@ -25,4 +25,19 @@ std::string lag_text(const Lag& lag, int frames) {
   return std::to_string(*lag.frames);
 }
 
+std::string lag_margin_text(const Lag& lag) {
+  if (!lag.measured) return "";
+  char text[96];
+  std::string out;
+  if (lag.settled_ratio) {
+    std::snprintf(text, sizeof text, "frames after it at most %.3fx the threshold", *lag.settled_ratio);
+    out = text;
+  }
+  if (lag.last_over_ratio) {
+    std::snprintf(text, sizeof text, "the last over it %.3fx", *lag.last_over_ratio);
+    out += (out.empty() ? "" : ", ") + std::string(text);
+  }
+  return out;
+}
+
 }  // namespace asvgf::report
