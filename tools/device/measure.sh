@@ -32,9 +32,9 @@
 #               every .devbin/asvgf_bvh<LEAF>x<CAP>) against this build: cornell, textured, many; Vulkan, OpenGL
 #   atrous      this build against every .devbin/asvgf_atrous_* (stripped probe binaries, built first):
 #               the bench twice each, alternately, Vulkan 1080p; then OpenGL 1080p and Vulkan 4K once
-#   atrous-quality  `asvgf report` at 1080p, light-exit (or $ATROUS_QUALITY_ANIMATIONS), 12 frames (or
-#               $ATROUS_QUALITY_FRAMES; the issue's lag is measured over 24), seed 0 (or each of
-#               $ATROUS_QUALITY_SEEDS), and each frame's relMSE, for this build and every
+#   atrous-quality  `asvgf report` at 1080p, light-exit (or $ATROUS_QUALITY_ANIMATIONS), 24 frames as the
+#               issue's rule (or $ATROUS_QUALITY_FRAMES), seed 0 (or each of $ATROUS_QUALITY_SEEDS: the lag
+#               can flip with the seed) and each frame's relMSE, for this build and every
 #               .devbin/asvgf_atrous_* (the issue-36 quality check of the atrous step's probes)
 #   glossy-probe  report glossy/boxes-move and glossy/orbit (or $GLOSSY_PROBE_ANIMATIONS), 12 frames, one
 #               signal and the split, for this build and every .devbin/asvgf_glossy_* (build_probes.sh glossy)
@@ -289,7 +289,7 @@ EOF_PY
         for anim in ${ATROUS_QUALITY_ANIMATIONS:-light-exit}; do
           for seed in ${ATROUS_QUALITY_SEEDS:-0}; do
             out=$R/quality-$anim-seed$seed-$(basename $bin)
-            timeout 240 $bin report "${HD[@]}" --animation $anim --frames ${ATROUS_QUALITY_FRAMES:-12} --seed $seed \
+            timeout 240 $bin report "${HD[@]}" --animation $anim --frames ${ATROUS_QUALITY_FRAMES:-24} --seed $seed \
               --methods raw --run def=asvgf --out $out --quiet > /dev/null 2>&1 || echo "report failed: $out"
             echo "$(basename $bin) $anim seed $seed: $(grep -h '^| `def`' $out/report.md | head -1 | cut -c1-160)"
             echo "  per frame: $(grep '^def,' $out/report.csv | cut -d, -f9 | tr '\n' ' ')"
