@@ -73,7 +73,8 @@ float weight_luminance(float lp, float lq, float sigma_l, float std_dev) {
 // The same three weights as one exp2 for the a-trous taps, whose arithmetic bounds the pass: the
 // divisions are hoisted out of the tap loop (AtrousScales, per pixel) and pow(c, s) is exp2(s log2 c).
 // The CPU reference keeps the three separate functions above; the results agree to fp32 rounding
-// (the a-trous tests' tolerance). A NaN cosine gives weight 0 here (pack_surface never lets one in).
+// (the a-trous tests' tolerance). A NaN cosine gives weight 0 where sigma_n > 0 (pack_surface never
+// lets one in).
 const float kLog2e = 1.4426950408889634;
 struct AtrousScales {
   vec4 depth;  // log2(e) / w_z's tolerance at L1 tap distance step * (1, 2, 3, 4)
@@ -92,7 +93,7 @@ float atrous_tap_weight(Surface p, float lp, float zq, vec3 nq, float lq, int l1
   const float cos_pq = dot(p.n, nq);
   const float log2_wn = sigma_n * log2(clamp(cos_pq, 1e-30, 1.0));
   const float w = exp2(log2_wn - abs(p.z - zq) * s.depth[l1 - 1] - abs(lp - lq) * s.luminance);
-  // No hit, or a normal facing away: pow(0, sigma_n) = 0 (pow(c, 0) = 1). NaN compares false: 0.
+  // No hit, or a normal facing away: pow(0, sigma_n) = 0 (pow(c, 0) = 1); a NaN cosine is not > 0.
   return zq > 0.0 && (cos_pq > 0.0 || sigma_n == 0.0) ? w : 0.0;
 }
 

@@ -282,7 +282,7 @@ EOF_PY
       for bin in $A "${probes[@]}"; do bench "$bin" vulkan "${MEASURE_SIZE_4K:-3840x2160}"; done | tee $R/atrous-4k.txt
       save ;;
     atrous-quality)
-      # The issue-36 quality check for the atrous step's probes: `asvgf report` at 1080p (12 frames,
+      # The issue-36 quality check for the atrous step's probes: `asvgf report` at 1080p (24 frames,
       # light-exit, or each of $ATROUS_QUALITY_ANIMATIONS, e.g. "light-exit static") with this build
       # and each .devbin/asvgf_atrous_*, raw beside it for the reference's noise.
       for bin in $A ./.devbin/asvgf_atrous_*; do
