@@ -74,15 +74,15 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const ResourceId counters = counters_.import(g);
   g.output(rays, hal::State::CopySrc);
   // Persistent: read next frame as histories.
-  const ResourceId vbuffer = g.add_image("visibility", w, h, F::RGBA32Uint, Lifetime::Persistent);
   const ResourceId depth_normal = g.add_image("depth_normal", w, h, F::RGBA16Uint, Lifetime::Persistent);
-  const ResourceId seeds = g.add_image("rng_seed", w, h, F::R32Uint, Lifetime::Persistent);
+  const ResourceId candidates = passes::add_gradient_candidates_image(g, w, h);
   // The filtering methods' samples in half floats (pathtrace.comp: what the denoiser keeps of them);
   // raw output and the reference unclamped.
   const bool full_range = !method;
   const ResourceId illumination =
       g.add_image("illumination", w, h, full_range ? F::RGBA32F : F::RGBA16F, Lifetime::Persistent);
   // Transient.
+  const ResourceId vbuffer = g.add_image("visibility", w, h, F::RGBA32Uint);
   const ResourceId motion = g.add_image("motion", w, h, F::RGBA16F);  // xy used
   const ResourceId albedo = g.add_image("albedo", w, h, F::RGBA16F);
   // Two signals only where a second chain has something to filter and every consumer of the
@@ -109,13 +109,12 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
     const passes::CarriedSamples resolved{g.add_image("gradient_seeds", gw, gh, F::RGBA32Uint),
                                           g.add_image("gradient_prev_luminance", gw, gh, F::RGBA32F)};  // xy used
     const ResourceId claims = g.add_buffer("gradient_claims", std::uint64_t(gw) * gh * 4);
-    passes::add_gradient_select(g, pipelines_, scene,
-                                {vbuffer, seeds, illumination, depth_normal, claims, resolved, split}, s.frame, w, h,
+    passes::add_gradient_select(g, pipelines_, scene, {candidates, depth_normal, claims, resolved}, w, h,
                                 gradients ? "" : not_moved);
     // The carried samples traced apart from the pixels: every pixel keeps a fresh sample.
     carried = {resolved, g.add_image("gradient_samples", gw, gh, F::RGBA32F), split, gradients ? "" : not_moved};
   }
-  passes::add_pathtrace(g, pipelines_, scene, vbuffer, illumination, seeds, rays, tracing, w, h, "pathtrace",
+  passes::add_pathtrace(g, pipelines_, scene, vbuffer, illumination, candidates, rays, tracing, w, h, "pathtrace",
                         split ? std::optional(passes::SpecularTargets{*specular, *specular_albedo}) : std::nullopt,
                         carried);
   const ResourceId gradient_samples = carried ? carried->gradient_samples : 0;

@@ -118,7 +118,7 @@ PathtraceParams pathtrace_params(const SceneInputs& scene, const PathtraceSettin
 }
 
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                   graph::ResourceId visibility, graph::ResourceId illumination, graph::ResourceId rng_seed,
+                   graph::ResourceId visibility, graph::ResourceId illumination, graph::ResourceId gradient_candidates,
                    graph::ResourceId ray_counter, const PathtraceSettings& s, std::uint32_t width, std::uint32_t height,
                    const std::string& name, std::optional<SpecularTargets> specular,
                    std::optional<CarriedSampleTargets> carried) {
@@ -152,7 +152,7 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
   auto bindings = scene_bindings(scene, shader);
   bindings.insert(bindings.end(), {{"visibility", visibility},
                                    {"illumination", illumination},
-                                   {"rng_seed", rng_seed},
+                                   {"gradient_candidates", gradient_candidates},
                                    {"ray_counter", ray_counter}});
   if (specular)
     bindings.insert(bindings.end(), {{"specular", specular->signal}, {"specular_albedo", specular->albedo}});
@@ -170,8 +170,13 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
                    {width, invocation_rows, 1});
 }
 
+graph::ResourceId add_gradient_candidates_image(graph::RenderGraph& graph, std::uint32_t width, std::uint32_t height) {
+  return graph.add_image("gradient_candidates", 2 * groups_for(width, 3), groups_for(height, 3),
+                         hal::Format::RGBA32Uint, graph::Lifetime::Persistent);
+}
+
 void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                         const GradientSelectTargets& t, std::uint32_t frame, std::uint32_t width, std::uint32_t height,
+                         const GradientSelectTargets& t, std::uint32_t width, std::uint32_t height,
                          const std::string& skip_reason) {
   const std::uint32_t sw = groups_for(width, 3), sh = groups_for(height, 3);
   const GradientClearParams clear{width, height, sw, sh};
@@ -180,22 +185,14 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
                    {{"claims", t.claims}, {"gradient_prev", t.carried.prev}}, to_bytes(clear), {sw, sh, 1})
       .skip_if(!skip_reason.empty(), skip_reason);
   // Bids, then the winners write: the lowest bid wins whatever order invocations run in.
-  const GradientSelectParams select{
-      uniform_camera<shaders::gradient_select_uniforms::Camera>(scene.camera), width, height, sw, sh, frame, 0, 0, 0};
-  const GradientResolveParams resolve{uniform_camera<shaders::gradient_resolve_uniforms::Camera>(scene.camera),
-                                      width,
-                                      height,
-                                      sw,
-                                      sh,
-                                      frame,
-                                      t.luminance_in_alpha ? 1u : 0u,
-                                      0,
-                                      0};
+  const GradientSelectParams select{uniform_camera<shaders::gradient_select_uniforms::Camera>(scene.camera), width,
+                                    height, sw, sh};
+  const GradientResolveParams resolve{uniform_camera<shaders::gradient_resolve_uniforms::Camera>(scene.camera), width,
+                                      height, sw, sh};
   add_compute_pass(graph, "gradient_select", shaders::gradient_select,
                    pipelines.get<GradientSelectParams>(shaders::gradient_select),
                    {{"triangles", scene.triangles},
-                    {"prev_visibility", t.visibility, true},
-                    {"prev_rng_seed", t.rng_seed, true},
+                    {"gradient_candidates", t.candidates, true},
                     {"depth_normal", t.depth_normal},
                     {"claims", t.claims}},
                    to_bytes(select), {sw, sh, 1})
@@ -203,9 +200,7 @@ void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, co
   add_compute_pass(graph, "gradient_resolve", shaders::gradient_resolve,
                    pipelines.get<GradientResolveParams>(shaders::gradient_resolve),
                    {{"triangles", scene.triangles},
-                    {"prev_visibility", t.visibility, true},
-                    {"prev_rng_seed", t.rng_seed, true},
-                    {"prev_illumination", t.illumination, true},
+                    {"gradient_candidates", t.candidates, true},
                     // No depth_normal: a winner passed its tests in gradient_select already.
                     {"claims", t.claims},
                     // Written only where a sample landed: elsewhere gradient_prev keeps gradient_clear's -1

@@ -57,7 +57,10 @@ struct CarriedSampleTargets {
   bool luminance_in_alpha = false;     // illumination holds pathtrace's split signals
   std::string skip_reason;             // not empty: nothing moved, no carried samples this frame
 };
-// Every pixel traces a fresh path of its own.
+// Every pixel traces a fresh path of its own. `gradient_candidates` (RGBA32Uint, 2 x strata wide,
+// strata high: add_gradient_candidates_image) gets, for each 3x3 stratum, the seed, surface point and
+// luminance of the pixel that next frame's gradient_select projects
+// (shaders/renderer/gradient_candidate.glsl).
 // `specular` present: the split variant writes the specular signal (RGBA32F) and the GGX lobe's
 // albedo (RGBA16F) there, and the diffuse signal, with the one-signal luminance in .a, to
 // `illumination` (the gbuffer writes the diffuse albedo: GbufferTargets::diffuse_albedo_only).
@@ -70,26 +73,26 @@ struct CarriedSampleTargets {
 // `ray_counter`: a buffer whose first uint the pass adds the rays it traced to (closest-hit and
 // shadow rays after the primary hit; the primary ray is the gbuffer's).
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                   graph::ResourceId visibility, graph::ResourceId illumination, graph::ResourceId rng_seed,
+                   graph::ResourceId visibility, graph::ResourceId illumination, graph::ResourceId gradient_candidates,
                    graph::ResourceId ray_counter, const PathtraceSettings& settings, std::uint32_t width,
                    std::uint32_t height, const std::string& name = "pathtrace",
                    std::optional<SpecularTargets> specular = std::nullopt,
                    std::optional<CarriedSampleTargets> carried = std::nullopt);
 
+// The image pathtrace writes the gradient's candidates to, for a width x height frame.
+graph::ResourceId add_gradient_candidates_image(graph::RenderGraph& graph, std::uint32_t width, std::uint32_t height);
+
 struct GradientSelectTargets {
-  graph::ResourceId visibility;     // persistent: last frame's version is read
-  graph::ResourceId rng_seed;       // persistent: last frame's version is read
-  graph::ResourceId illumination;   // persistent: last frame's version is read
-  graph::ResourceId depth_normal;   // this frame's
-  graph::ResourceId claims;         // transient buffer, one uint per stratum
-  CarriedSamples carried;           // stratum-sized
-  bool luminance_in_alpha = false;  // illumination holds pathtrace's split signals
+  graph::ResourceId candidates;    // persistent: last frame's pathtrace's version is read
+  graph::ResourceId depth_normal;  // this frame's
+  graph::ResourceId claims;        // transient buffer, one uint per stratum
+  CarriedSamples carried;          // stratum-sized
 };
 // Three passes: gradient_clear, gradient_select (bids), gradient_resolve (the winners write). Left
 // out, with `skip_reason`, when not empty.
 void add_gradient_select(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                         const GradientSelectTargets& targets, std::uint32_t frame, std::uint32_t width,
-                         std::uint32_t height, const std::string& skip_reason);
+                         const GradientSelectTargets& targets, std::uint32_t width, std::uint32_t height,
+                         const std::string& skip_reason);
 
 // The specular history's motion through each pixel's reflection (shaders/renderer/specular_motion.comp):
 // reads depth_normal, motion and pathtrace's split `specular` (a: the reflected ray's length), writes

@@ -4,42 +4,36 @@
 #ifndef ASVGF_FRAME_GRADIENT_PROJECTION_GLSL
 #define ASVGF_FRAME_GRADIENT_PROJECTION_GLSL
 
-#include "common/random.glsl"
+#include "renderer/gradient_candidate.glsl"
 #include "common/scene_data.glsl"
 #include "common/depth_normal.glsl"
 
-// Needs: params (width, height, strata_width, frame, camera), `triangles` (this frame's),
-// `prev_visibility`, `prev_rng_seed`, `depth_normal` (this frame's), and a global `Camera cam`
-// loaded from params.
+// Needs: params (width, height, camera), `triangles` (this frame's), `gradient_candidates` (last
+// frame's pathtrace's: renderer/gradient_candidate.glsl), `depth_normal` (this frame's), and a global
+// `Camera cam` loaded from params.
 
 struct Projection {
   bool ok;
-  ivec2 from;  // last frame's pixel
-  ivec2 to;    // this frame's pixel showing the same surface point
-  uvec4 vis;   // last frame's visibility of it (triangle and barycentrics)
+  ivec2 to;         // this frame's pixel showing the same surface point
+  uvec4 candidate;  // last frame's seed, triangle and barycentrics of the stratum's picked pixel
 };
 
-// The pixel last frame's stratum `s` contributes (one of its 9, by a hash of stratum and frame),
-// and where its surface point lands now if the surface there is the same. Written as straight-line
-// code with one exit: naga (the WGSL step) mistranslates early returns out of this once inlined.
+// Where last frame's stratum `s`'s candidate sample's surface point (the same triangle and
+// barycentrics, this frame's vertices) lands now, if the surface there is the same. Written as
+// straight-line code with one exit: naga (the WGSL step) mistranslates early returns out of this once
+// inlined.
 Projection project_sample(ivec2 s) {
   Projection r;
-  uint pick = pcg_hash(uint(s.y) * params.strata_width + uint(s.x) + pcg_hash(params.frame)) % 9u;
-  r.from = 3 * s + ivec2(int(pick % 3u), int(pick / 3u));
-  bool ok = r.from.x < int(params.width) && r.from.y < int(params.height);
-  const ivec2 from = min(r.from, ivec2(int(params.width) - 1, int(params.height) - 1));
-  uvec4 vis = texelFetch(prev_visibility, from, 0);
-  ok = ok && vis.x != 0u && vis.x != 0xFFFFFFFFu;  // nothing, or a light: no shading to compare
-  // Seed 0: the pixel shaded a carried sample last frame, another point than its visibility names,
-  // so its luminance would not match a re-shading of that visibility.
-  ok = ok && texelFetch(prev_rng_seed, from, 0).x != 0u;
-  r.vis = vis;
+  const uvec4 candidate = texelFetch(gradient_candidates, gradient_candidate_texel(s), 0);
+  // Seed 0: no sample (off the image, or nothing or a light: no shading to compare).
+  bool ok = candidate.x != 0u;
+  r.candidate = candidate;
 
-  uint tri = ok ? vis.y : 0u;
+  uint tri = ok ? candidate.y : 0u;
   vec3 p0 = triangles.values[tri].p0;
   vec3 p1 = triangles.values[tri].p1;
   vec3 p2 = triangles.values[tri].p2;
-  vec2 b = vec2(uintBitsToFloat(vis.z), uintBitsToFloat(vis.w));
+  vec2 b = vec2(uintBitsToFloat(candidate.z), uintBitsToFloat(candidate.w));
   vec3 x = p0 * (1.0 - b.x - b.y) + p1 * b.x + p2 * b.y;
   vec3 c = cross(p1 - p0, p2 - p0);
   float area2 = dot(c, c);

@@ -2,7 +2,7 @@
 // sample of last frame won in gradient_select, redo that sample's projection (the same function),
 // store last frame's seed and surface point for the stratum (gradient_seeds is stratum-sized;
 // gradient_prev.y names the landing pixel in it), and record last frame's luminance of the sample
-// for the gradient pass.
+// for the gradient pass: all from the candidate pathtrace wrote (renderer/gradient_candidate.glsl).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -16,16 +16,10 @@ layout(set = 0, binding = 0, std140) uniform Params {
   uint height;
   uint strata_width;
   uint strata_height;
-  uint frame;
-  uint luminance_in_alpha;  // 1: illumination.a holds the luminance (pathtrace's SPLIT_SPECULAR), -1 missing
-  uint pad1;
-  uint pad2;
 } params;
 
 layout(set = 0, binding = 3, std430) readonly buffer Triangles { Triangle values[]; } triangles;
-layout(set = 0, binding = 10) uniform utexture2D prev_visibility;
-layout(set = 0, binding = 11) uniform utexture2D prev_rng_seed;
-layout(set = 0, binding = 12) uniform texture2D prev_illumination;
+layout(set = 0, binding = 10) uniform utexture2D gradient_candidates;  // last frame's
 layout(set = 0, binding = 13) uniform utexture2D depth_normal;
 layout(set = 0, binding = 14, std430) readonly buffer Claims { uint values[]; } claims;
 layout(set = 0, binding = 15, rgba32ui) writeonly uniform uimage2D gradient_seeds;
@@ -41,10 +35,9 @@ void main() {
   LOAD_CAMERA(cam, params.camera);
   uint winner = claims.values[uint(sq.y) * params.strata_width + uint(sq.x)];
   if (winner == 0xFFFFFFFFu) return;  // no sample landed here: gradient_clear's "none" stays
-  Projection p = project_sample(ivec2(int(winner % params.strata_width), int(winner / params.strata_width)));
-  uint seed = texelFetch(prev_rng_seed, p.from, 0).x;
-  imageStore(gradient_seeds, sq, uvec4(seed, p.vis.y, p.vis.z, p.vis.w));
-  vec4 prev = texelFetch(prev_illumination, p.from, 0);
-  float l_prev = params.luminance_in_alpha != 0u ? prev.a : luminance(prev.rgb);
+  const ivec2 s = ivec2(int(winner % params.strata_width), int(winner / params.strata_width));
+  Projection p = project_sample(s);
+  imageStore(gradient_seeds, sq, p.candidate);
+  const float l_prev = uintBitsToFloat(texelFetch(gradient_candidates, gradient_candidate_luminance_texel(s), 0).x);
   imageStore(gradient_prev, sq, vec4(l_prev, float((p.to.x % 3) + 3 * (p.to.y % 3)), 0.0, 0.0));
 }

@@ -1,6 +1,6 @@
 // gradient_select (A-SVGF forward projection, step 1 of 2): for each 3x3 stratum of last frame,
-// pick one pixel and find where its surface point (same triangle and barycentrics, this frame's
-// vertices) lands now; if the surface there is the same, bid for the stratum it lands in. The
+// find where the surface point of the pixel pathtrace picked (renderer/gradient_candidate.glsl: same
+// triangle and barycentrics, this frame's vertices) lands now; if the surface there is the same, bid for the stratum it lands in. The
 // lowest bid (last frame's stratum index) wins, whatever order the GPU runs invocations in, so the
 // result is reproducible; gradient_resolve then writes for the winners. Each stratum is won once,
 // so no seed is reused.
@@ -17,15 +17,10 @@ layout(set = 0, binding = 0, std140) uniform Params {
   uint height;
   uint strata_width;
   uint strata_height;
-  uint frame;
-  uint pad0;
-  uint pad1;
-  uint pad2;
 } params;
 
 layout(set = 0, binding = 3, std430) readonly buffer Triangles { Triangle values[]; } triangles;
-layout(set = 0, binding = 10) uniform utexture2D prev_visibility;
-layout(set = 0, binding = 11) uniform utexture2D prev_rng_seed;
+layout(set = 0, binding = 10) uniform utexture2D gradient_candidates;  // last frame's
 layout(set = 0, binding = 13) uniform utexture2D depth_normal;
 layout(set = 0, binding = 14, std430) buffer Claims { uint values[]; } claims;
 

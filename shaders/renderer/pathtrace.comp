@@ -2,8 +2,9 @@
 // visibility buffer: next-event estimation to sphere lights and emissive triangles combined with
 // BSDF sampling (cosine-weighted on Lambertian surfaces, common/bsdf.glsl's lobe mixture on glossy
 // ones) by multiple importance sampling (power heuristic), Russian roulette after two bounces. Writes
-// demodulated illumination (radiance / demodulation_albedo, guarded) and the random seed each pixel
-// used. Every pixel traces a fresh path of its own.
+// demodulated illumination (radiance / demodulation_albedo, guarded) and, for each 3x3 stratum, the
+// sample of the pixel that next frame's forward projection re-shades (renderer/gradient_candidate.glsl:
+// its seed, surface point and luminance). Every pixel traces a fresh path of its own.
 // With CARRIED_SAMPLES (A-SVGF's re-shading) workgroups past the image's rows shade 3x3 strata: each
 // stratum that gradient_resolve gave a carried sample traces it from last frame's surface point
 // with last frame's seed, and writes its luminance beside last frame's into the gradient sample
@@ -50,6 +51,7 @@ layout(set = 0, binding = 0, std140) uniform Params {
 #include "renderer/scene_bindings.glsl"
 #include "common/random.glsl"
 #include "common/sampling.glsl"
+#include "renderer/gradient_candidate.glsl"
 
 #ifndef CARRIED_ONLY
 layout(set = 0, binding = 10) uniform utexture2D visibility;
@@ -86,7 +88,8 @@ layout(set = 0, binding = 17) uniform texture2D gradient_prev;
 layout(set = 0, binding = 18, rgba32f) writeonly uniform image2D gradient_samples;
 #endif
 #ifndef CARRIED_ONLY
-layout(set = 0, binding = 12, r32ui) writeonly uniform uimage2D rng_seed;
+// Two texels a stratum (renderer/gradient_candidate.glsl), written by each stratum's picked pixel.
+layout(set = 0, binding = 12, rgba32ui) writeonly uniform uimage2D gradient_candidates;
 #endif
 // Rays traced this frame (closest and shadow), for the rays-per-second benchmark.
 layout(set = 0, binding = 14, std430) buffer RayCounter { uint count; } ray_counter;
@@ -472,6 +475,19 @@ Work pixel_work(ivec2 p) {
   return w;
 }
 
+// Where p is its stratum's pick for next frame's projection (or, for a pick off the image, the pixel
+// nearest it), the stratum's candidate: this pixel's seed, surface point and luminance `l`.
+void store_gradient_candidate(Work w, float l) {
+  const ivec2 p = w.at;
+  const ivec2 size = ivec2(int(params.width), int(params.height));
+  const ivec2 s = p / 3;
+  const ivec2 from = gradient_candidate_pixel(uvec2(s), (params.width + 2u) / 3u, params.frame);
+  if (any(notEqual(min(from, size - 1), p))) return;
+  const bool ok = all(lessThan(from, size)) && w.vis.x != 0u && w.vis.x != 0xFFFFFFFFu;
+  imageStore(gradient_candidates, gradient_candidate_texel(s), uvec4(ok ? w.seed : 0u, w.vis.yzw));
+  imageStore(gradient_candidates, gradient_candidate_luminance_texel(s), uvec4(floatBitsToUint(l), 0u, 0u, 0u));
+}
+
 void store_pixel(Work w, Shaded shaded) {
   const ivec2 p = w.at;
   const vec3 one = one_signal(shaded);
@@ -499,10 +515,12 @@ void store_pixel(Work w, Shaded shaded) {
                   alpha_luminance(one)));
   imageStore(specular, p,
              vec4(specular_radiance / max(shaded.ggx_albedo, vec3(kAlbedoGuard)), first_specular_distance));
+  store_gradient_candidate(w, alpha_luminance(one));
 #else
-  imageStore(illumination, p, vec4(stored_sample(one), 0.0));
+  const vec3 stored = stored_sample(one);
+  imageStore(illumination, p, vec4(stored, 0.0));
+  store_gradient_candidate(w, luminance(stored));
 #endif
-  imageStore(rng_seed, p, uvec4(w.seed));
 }
 #endif
 
