@@ -4,12 +4,14 @@
 // re-shaded sample's luminance: with CURRENT_GIVEN gradient_prev.z (the renderer shaded it apart;
 // negative or not finite: missing), else the luminance of the sample's pixel of `illumination`.
 // Strata without a usable sample write (0, 0): they add nothing to either sum of the gradient
-// a-trous, so the ratio |delta^|/Delta^ the temporal pass uses is the one of the samples that exist.
+// a-trous, so the ratio |delta^|/Delta^ the temporal pass uses is the one of the samples that exist
+// (common/gradient_sample.glsl). Where l_cur is given and the gradient a-trous runs, its first
+// iteration computes the gradient from the samples itself, and this pass does not run.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
-#include "common/color.glsl"
 #include "common/compute.glsl"
+#include "common/gradient_sample.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -33,25 +35,17 @@ void main() {
   ivec2 s = invocation_pixel();
   if (!inside(s, params.gradient_width, params.gradient_height)) return;
   vec4 prev = texelFetch(gradient_prev, s, 0);
-  vec2 result = vec2(0.0);
-  // l_prev < 0: last frame's sample was missing (luminance_in_alpha).
-  if (prev.y >= 0.0 && prev.y < 9.0 && !not_finite(prev.x) && (params.luminance_in_alpha == 0u || prev.x >= 0.0)) {
-    int index = int(prev.y);
-    ivec2 p = 3 * s + ivec2(index % 3, index / 3);
-    if (inside(p, params.width, params.height)) {
 #ifdef CURRENT_GIVEN
-      bool usable = prev.z >= 0.0 && !not_finite(prev.z);
-      float l_cur = min(prev.z, kFp16Max);
+  const vec2 result = gradient_of_given_sample(s, prev, params.width, params.height, params.luminance_in_alpha != 0u);
 #else
-      vec4 c = texelFetch(illumination, p, 0);
-      bool usable = params.luminance_in_alpha != 0u ? c.a >= 0.0 : !any_not_finite(c.rgb);
-      float l_cur = params.luminance_in_alpha != 0u ? c.a : luminance(clamp_sample(c.rgb));
-#endif
-      if (usable) {
-        float l_prev = clamp(prev.x, 0.0, kFp16Max);
-        result = vec2(l_cur - l_prev, max(l_cur, l_prev));
-      }
-    }
+  vec2 result = vec2(0.0);
+  ivec2 p;
+  if (gradient_sample_pixel(s, prev, params.width, params.height, params.luminance_in_alpha != 0u, p)) {
+    vec4 c = texelFetch(illumination, p, 0);
+    bool usable = params.luminance_in_alpha != 0u ? c.a >= 0.0 : !any_not_finite(c.rgb);
+    float l_cur = params.luminance_in_alpha != 0u ? c.a : luminance(clamp_sample(c.rgb));
+    if (usable) result = gradient_of_sample(prev.x, l_cur);
   }
-  imageStore(gradient, s, vec4(round_to_half(result), 0.0, 0.0));
+#endif
+  imageStore(gradient, s, vec4(result, 0.0, 0.0));
 }

@@ -5,13 +5,17 @@
 // The guide is depth_normal at each stratum's centre pixel: 1 texel in 9. Variants: GUIDE_OUT (the
 // first of several iterations) also writes those texels into a 1/3-resolution image; GUIDE_IN (the
 // later ones) reads them there instead of depth_normal (whose every iteration counted 8 bytes a
-// pixel against the strata's 0.9).
+// pixel against the strata's 0.9). SAMPLES_IN (the first iteration, where the renderer gives l_cur)
+// reads the gradient samples (l_prev, index, l_cur) and computes each tap's (delta, Delta) itself
+// (common/gradient_sample.glsl), bit for bit what the gradient pass would have stored, so that pass
+// and its image do not run: its dispatch cost more than the nine taps' few operations.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
 #extension GL_EXT_control_flow_attributes : require
 #include "common/compute.glsl"
 #include "common/denoise.glsl"
+#include "common/gradient_sample.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -23,7 +27,9 @@ layout(set = 0, binding = 0) uniform Params {
   int step;  // 2^iteration, in strata
   float sigma_z;
   float sigma_n;
+  uint luminance_in_alpha;  // SAMPLES_IN: the samples' l_prev < 0 means missing (split signals)
 } params;
+// (delta, Delta); with SAMPLES_IN the gradient samples (l_prev, index or -1, l_cur, -).
 layout(set = 0, binding = 1) uniform texture2D gradient_in;
 #ifdef GUIDE_IN
 layout(set = 0, binding = 2) uniform utexture2D strata_guide;
@@ -62,7 +68,12 @@ void main() {
     [[unroll]] for (int dx = -1; dx <= 1; ++dx) {
       ivec2 q = s + params.step * ivec2(dx, dy);
       if (inside(q, params.gradient_width, params.gradient_height) && all(greaterThanEqual(q, ivec2(0)))) {
+#ifdef SAMPLES_IN
+        const vec2 g = gradient_of_given_sample(q, texelFetch(gradient_in, q, 0), params.width, params.height,
+                                                params.luminance_in_alpha != 0u);
+#else
         vec2 g = texelFetch(gradient_in, q, 0).xy;
+#endif
         float w = binomial3(dx) * binomial3(dy);
         if (dx != 0 || dy != 0) {
           ivec2 gq = guide_pixel(q);

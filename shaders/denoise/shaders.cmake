@@ -2,7 +2,10 @@
 # gradient: `in_illumination` reads the re-shaded sample's luminance from its pixel, `given` from the
 # gradient sample's z (DenoiserConfig::gradient_current_given).
 asvgf_add_shader(gradient SOURCE denoise/gradient.comp VARIANTS in_illumination given=CURRENT_GIVEN)
-asvgf_add_shader(gradient_atrous SOURCE denoise/gradient_atrous.comp VARIANTS plain first=GUIDE_OUT rest=GUIDE_IN)
+# gradient_atrous: `first` writes the strata guide the `rest` read; the `samples` ones compute the
+# gradient from the samples (the first iteration, l_cur given).
+asvgf_add_shader(gradient_atrous SOURCE denoise/gradient_atrous.comp
+                 VARIANTS plain first=GUIDE_OUT rest=GUIDE_IN samples=SAMPLES_IN samples_first=SAMPLES_IN,GUIDE_OUT)
 asvgf_add_shader(temporal SOURCE denoise/temporal.comp
                  VARIANTS constant adaptive=ADAPTIVE constant_virtual=VIRTUAL_MOTION adaptive_virtual=ADAPTIVE,VIRTUAL_MOTION)
 asvgf_add_shader(variance SOURCE denoise/variance.comp)

@@ -180,7 +180,9 @@ TEST_CASE("denoise passes: pack_surface matches the CPU reference, bad depths an
 
 // Both ways a renderer hands over the re-shaded sample: as its pixel of the illumination, or as the
 // gradient sample's z (current_given), where the pixel's own sample must not be read.
-TEST_CASE("denoise passes: gradient pass matches the CPU reference, l_cur from the pixel or from the sample") {
+TEST_CASE(
+    "denoise passes: gradient pass matches the CPU reference, l_cur from the pixel or from the sample, and the first "
+    "gradient a-trous iteration from the samples equals the two passes") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   for (const bool given : {false, true})
@@ -216,7 +218,37 @@ TEST_CASE("denoise passes: gradient pass matches the CPU reference, l_cur from t
       passes::add_gradient(g, pipelines, {in, gp, out, false, given});
       ImageD got;
       harness.readback(g, out, &got);
+      // With l_cur given, the first gradient a-trous iteration computes the gradient from the samples
+      // itself (the denoiser then runs no gradient pass): to the bit what this pass and a plain
+      // iteration give, with and without writing the strata guide.
+      ImageD got_two_passes, got_from_samples, got_from_samples_guide;
+      if (given) {
+        const auto ugw = static_cast<std::uint32_t>(gw), ugh = static_cast<std::uint32_t>(gh);
+        const auto dn =
+            harness.input(g, "depth_normal", depth_normal_texels(random_depth_normal(r, w, h)), F::RGBA16Uint);
+        const auto two_passes = g.add_image("gradient.1", ugw, ugh, F::RGBA16F);
+        const auto from_samples = g.add_image("gradient.1.samples", ugw, ugh, F::RGBA16F);
+        const auto from_samples_guide = g.add_image("gradient.1.samples_guide", ugw, ugh, F::RGBA16F);
+        const auto guide = g.add_image("gradient_guide", ugw, ugh, F::RGBA16Uint);
+        const asvgf::DenoiseSettings settings;
+        passes::add_gradient_atrous(g, pipelines, {out, dn, two_passes}, 0, settings);
+        passes::add_gradient_atrous(g, pipelines, {gp, dn, from_samples, std::nullopt, std::nullopt, true}, 0,
+                                    settings);
+        passes::add_gradient_atrous(g, pipelines, {gp, dn, from_samples_guide, guide, std::nullopt, true}, 0, settings);
+        harness.readback(g, two_passes, &got_two_passes);
+        harness.readback(g, from_samples, &got_from_samples);
+        harness.readback(g, from_samples_guide, &got_from_samples_guide);
+      }
       harness.run(g);
+      if (given) {
+        int differ = 0, differ_guide = 0;
+        for (std::size_t i = 0; i < got_two_passes.data.size(); ++i) {
+          differ += got_from_samples.data[i] != got_two_passes.data[i];
+          differ_guide += got_from_samples_guide.data[i] != got_two_passes.data[i];
+        }
+        CHECK(differ == 0);
+        CHECK(differ_guide == 0);
+      }
       const ImageD want =
           ref::gradient(quantize(illumination, F::RGBA32F), quantize(prev, given ? F::RGBA32F : F::RG32F), given);
       DENOISE_CHECK_CLOSE(compare(got, want, 2, fp16_tolerance(4)), "gradient");

@@ -172,11 +172,13 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
     // Reprojected: runs on every frame, still ones too: its luminance is the next frame's history.
     const bool skip = !reprojected && !in.gradient_skip_reason.empty();
     const std::uint32_t gw = (w + 2) / 3, gh = (h + 2) / 3;  // one stratum per 3x3 pixels
-    ResourceId current = graph.add_image("gradient", gw, gh, F::RGBA16F);
+    // With l_cur given, the first a-trous iteration computes the gradient from the samples itself.
+    const bool samples_in = !reprojected && in.gradient_current_given && s.gradient_iterations > 0;
+    ResourceId current = samples_in ? *in.gradient_prev : graph.add_image("gradient", gw, gh, F::RGBA16F);
     if (reprojected) {
       const ResourceId luminance = graph.add_image("noisy_luminance", w, h, F::R32F, Lifetime::Persistent);
       add_gradient_reprojected(graph, pipelines, {in.illumination, in.motion, in.depth_normal, luminance, current});
-    } else {
+    } else if (!samples_in) {
       add_gradient(graph, pipelines,
                    {in.illumination, *in.gradient_prev, current, in.specular.has_value(), in.gradient_current_given})
           .skip_if(skip, in.gradient_skip_reason);
@@ -187,10 +189,10 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
                                   : std::nullopt;
     for (int i = 0; i < s.gradient_iterations; ++i) {
       const ResourceId next = graph.add_image("gradient." + std::to_string(i + 1), gw, gh, F::RGBA16F);
-      add_gradient_atrous(
-          graph, pipelines,
-          {current, in.depth_normal, next, i == 0 ? strata_guide : std::nullopt, i > 0 ? strata_guide : std::nullopt},
-          i, s)
+      add_gradient_atrous(graph, pipelines,
+                          {current, in.depth_normal, next, i == 0 ? strata_guide : std::nullopt,
+                           i > 0 ? strata_guide : std::nullopt, samples_in && i == 0, in.specular.has_value()},
+                          i, s)
           .skip_if(skip, in.gradient_skip_reason);
       current = next;
     }

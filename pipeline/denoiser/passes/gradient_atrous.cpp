@@ -9,6 +9,8 @@
 #include "shaders/gradient_atrous.first.hpp"
 #include "shaders/gradient_atrous.plain.hpp"
 #include "shaders/gradient_atrous.rest.hpp"
+#include "shaders/gradient_atrous.samples.hpp"
+#include "shaders/gradient_atrous.samples_first.hpp"
 
 namespace asvgf::passes {
 namespace {
@@ -32,9 +34,12 @@ graph::PassBuilder add_gradient_atrous(graph::RenderGraph& graph, PipelineCache&
       throw std::invalid_argument("add_gradient_atrous: '" + decl.name + "' is not the gradient's " +
                                   std::to_string(out.width) + "x" + std::to_string(out.height));
   }
-  const Uniforms u{full.width, full.height, out.width, out.height, 1 << iteration, s.sigma_z, s.sigma_n};
+  if (r.samples_in && r.strata_guide_in)
+    throw std::invalid_argument("add_gradient_atrous: only the first iteration reads the gradient samples");
+  const Uniforms u{full.width,     full.height, out.width, out.height,
+                   1 << iteration, s.sigma_z,   s.sigma_n, r.luminance_in_alpha ? 1u : 0u};
   std::vector<Binding> bindings{{"gradient_in", r.gradient_in}, {"gradient_out", r.gradient_out}};
-  const hal::ShaderInfo* shader = &sh::gradient_atrous_plain;
+  const hal::ShaderInfo* shader = r.samples_in ? &sh::gradient_atrous_samples : &sh::gradient_atrous_plain;
   if (r.strata_guide_in) {
     shader = &sh::gradient_atrous_rest;
     bindings.push_back({"strata_guide", *r.strata_guide_in});
@@ -42,7 +47,7 @@ graph::PassBuilder add_gradient_atrous(graph::RenderGraph& graph, PipelineCache&
     bindings.push_back({"depth_normal", r.depth_normal});
   }
   if (r.strata_guide_out) {
-    shader = &sh::gradient_atrous_first;
+    shader = r.samples_in ? &sh::gradient_atrous_samples_first : &sh::gradient_atrous_first;
     bindings.push_back({"strata_guide_out", *r.strata_guide_out});
   }
   const auto pipeline = pipelines.get<Uniforms>(*shader);

@@ -11,7 +11,9 @@
 namespace asvgf::passes {
 
 struct GradientAtrousResources {
-  graph::ResourceId gradient_in = 0;   // read: 1/3 res RGBA16F (delta, Delta)
+  // read: 1/3 res RGBA16F (delta, Delta); with samples_in the gradient samples (gradient.hpp's
+  // gradient_prev with l_cur in z), whose gradient the iteration computes as the gradient pass does.
+  graph::ResourceId gradient_in = 0;
   graph::ResourceId depth_normal = 0;  // read unless strata_guide_in is given: full-res guide (RGBA16UI)
   graph::ResourceId gradient_out = 0;  // written: 1/3 res RGBA16F
   // 1/3 res RGBA16UI: depth_normal's texel at each stratum's centre pixel, the only texels an
@@ -19,9 +21,12 @@ struct GradientAtrousResources {
   // depth_normal.
   std::optional<graph::ResourceId> strata_guide_out;
   std::optional<graph::ResourceId> strata_guide_in;
+  bool samples_in = false;          // the first iteration only (not with strata_guide_in)
+  bool luminance_in_alpha = false;  // samples_in: the samples come from pathtrace's split signals
 };
 // Adds "gradient_atrous.<iteration + 1>" with step 2^iteration (sigma_z, sigma_n from settings).
-// Throws std::invalid_argument for both strata guides at once or one not of the gradient's size.
+// Throws std::invalid_argument for both strata guides at once, one not of the gradient's size, or
+// samples_in with strata_guide_in.
 graph::PassBuilder add_gradient_atrous(graph::RenderGraph& graph, PipelineCache& pipelines,
                                        const GradientAtrousResources& r, int iteration,
                                        const DenoiseSettings& settings);
