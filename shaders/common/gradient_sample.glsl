@@ -3,7 +3,7 @@
 // none[, l_cur]): delta = l_cur - l_prev and Delta = max(l_cur, l_prev), as fp16 holds them; (0, 0)
 // without a usable sample, so that it adds nothing to either sum of the gradient a-trous. For the
 // gradient pass (denoise/gradient.comp) and for the first gradient a-trous iteration, which
-// computes its taps' gradients from the samples itself where l_cur is given
+// computes the gradients of its taps from the samples itself where l_cur is given
 // (denoise/gradient_atrous.comp, SAMPLES_IN).
 #ifndef ASVGF_COMMON_GRADIENT_SAMPLE_GLSL
 #define ASVGF_COMMON_GRADIENT_SAMPLE_GLSL

@@ -52,9 +52,33 @@ uvec4 guide_texel(ivec2 s) {
 #endif
 }
 
-void main() {
-  ivec2 s = invocation_pixel();
-  if (!inside(s, params.gradient_width, params.gradient_height)) return;
+#ifdef SAMPLES_IN
+// Step 1 only: the workgroup's 8x8 strata and their taps lie in one 10x10 block, whose gradients are
+// computed once each into shared memory (each tap computing its own, 9 a stratum, cost the pass
+// 0.007 ms at 1080p on an H100: docs/performance.md).
+const int kTile = 10;
+shared vec2 tile_gradient[kTile * kTile];
+ivec2 tile_origin() { return ivec2(gl_WorkGroupID.xy) * 8 - 1; }
+void load_tile() {
+  const ivec2 grid = ivec2(params.gradient_width, params.gradient_height);
+  for (int k = int(gl_LocalInvocationIndex); k < kTile * kTile; k += 64) {
+    const ivec2 q = tile_origin() + ivec2(k % kTile, k / kTile);
+    const bool in_grid = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, grid));
+    const vec4 sample_q = texelFetch(gradient_in, clamp(q, ivec2(0), grid - 1), 0);
+    tile_gradient[k] = in_grid ? gradient_of_given_sample(q, sample_q, params.width, params.height,
+                                                          params.luminance_in_alpha != 0u)
+                               : vec2(0.0);
+  }
+}
+vec2 tap_gradient(ivec2 q) {
+  const ivec2 t = q - tile_origin();
+  return tile_gradient[t.y * kTile + t.x];
+}
+#else
+vec2 tap_gradient(ivec2 q) { return texelFetch(gradient_in, q, 0).xy; }
+#endif
+
+void filter_stratum(ivec2 s) {
   ivec2 gp = guide_pixel(s);
   const uvec4 center_texel = guide_texel(s);
 #ifdef GUIDE_OUT
@@ -68,12 +92,7 @@ void main() {
     [[unroll]] for (int dx = -1; dx <= 1; ++dx) {
       ivec2 q = s + params.step * ivec2(dx, dy);
       if (inside(q, params.gradient_width, params.gradient_height) && all(greaterThanEqual(q, ivec2(0)))) {
-#ifdef SAMPLES_IN
-        const vec2 g = gradient_of_given_sample(q, texelFetch(gradient_in, q, 0), params.width, params.height,
-                                                params.luminance_in_alpha != 0u);
-#else
-        vec2 g = texelFetch(gradient_in, q, 0).xy;
-#endif
+        const vec2 g = tap_gradient(q);
         float w = binomial3(dx) * binomial3(dy);
         if (dx != 0 || dy != 0) {
           ivec2 gq = guide_pixel(q);
@@ -89,4 +108,14 @@ void main() {
     }
   }
   imageStore(gradient_out, s, vec4(round_to_half(sum / weights), 0.0, 0.0));
+}
+
+// No return before the tile's barrier (every invocation reaches it).
+void main() {
+#ifdef SAMPLES_IN
+  load_tile();
+  barrier();
+#endif
+  ivec2 s = invocation_pixel();
+  if (inside(s, params.gradient_width, params.gradient_height)) filter_stratum(s);
 }

@@ -323,6 +323,10 @@ TEST_CASE(
   CHECK_THROWS_AS(
       passes::add_gradient_atrous(g, pipelines, {gin, dn, out, g.add_image("wide", 4, 3, F::RGBA16Uint)}, 0, settings),
       std::invalid_argument);
+  // The samples' gradients are computed into a tile with step 1's apron.
+  CHECK_THROWS_AS(
+      passes::add_gradient_atrous(g, pipelines, {gin, dn, out, std::nullopt, std::nullopt, true}, 1, settings),
+      std::invalid_argument);
 }
 
 namespace {

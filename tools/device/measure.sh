@@ -40,7 +40,8 @@
 #               signal and the split, for this build and every .devbin/asvgf_glossy_* (build_probes.sh glossy)
 #   ab          this build against another (.devbin/asvgf_base: `cp` a stripped binary of the commit
 #               before there): the bench twice each, alternately, on each backend in $AB_BACKENDS
-#               (default vulkan; e.g. "vulkan gl"), then the issue-36 quality check,
+#               (default vulkan; e.g. "vulkan gl"; none with AB_NO_BENCH=1), Vulkan at 4K once each with
+#               AB_4K=1, then (unless AB_NO_QUALITY=1) the issue-36 quality check,
 #               `asvgf report` at 1080p on light-exit (24 frames, asvgf) with each
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
@@ -312,14 +313,24 @@ EOF_PY
       B=./.devbin/asvgf_base
       [ -x $B ] || { echo "measure.sh ab: $B missing" >&2; exit 2; }
       for backend in ${AB_BACKENDS:-vulkan}; do
+        [ -n "${AB_NO_BENCH:-}" ] && break
         for round in 1 2; do
           for bin in $B $A; do
             echo "-- $bin $backend round $round"
-            timeout 60 $bin bench "${BENCH[@]}" --backend $backend 2>&1 | grep -E "^(gbuffer|gradient|temporal|atrous|local_mean|denoiser|frame)"
+            timeout 60 $bin bench "${BENCH[@]}" --backend $backend 2>&1 |
+              grep -E "^(gbuffer|pathtrace|gradient|temporal|atrous|local_mean|composite|denoiser|frame)"
           done
         done
       done | tee $R/ab-bench.txt
       save
+      if [ -n "${AB_4K:-}" ] && [ -z "${AB_NO_BENCH:-}" ]; then  # Vulkan at 4K, once each (MEASURE_SIZE_4K for a dry run)
+        for bin in $B $A; do
+          echo "-- $bin vulkan ${MEASURE_SIZE_4K:-3840x2160}"
+          timeout 90 $bin bench "${BENCH[@]/#$size/${MEASURE_SIZE_4K:-3840x2160}}" 2>&1 | grep -E "^(gradient|denoiser|frame)"
+        done | tee $R/ab-4k.txt
+        save
+      fi
+      [ -n "${AB_NO_QUALITY:-}" ] && continue
       for bin in $B $A; do
         timeout 200 $bin report "${HD[@]}" --methods asvgf --out $R/ab-$(basename $bin) --quiet 2>&1 | tail -1
         grep -h "^| \`asvgf\`" $R/ab-$(basename $bin)/report.md | head -1

@@ -34,8 +34,8 @@ graph::PassBuilder add_gradient_atrous(graph::RenderGraph& graph, PipelineCache&
       throw std::invalid_argument("add_gradient_atrous: '" + decl.name + "' is not the gradient's " +
                                   std::to_string(out.width) + "x" + std::to_string(out.height));
   }
-  if (r.samples_in && r.strata_guide_in)
-    throw std::invalid_argument("add_gradient_atrous: only the first iteration reads the gradient samples");
+  if (r.samples_in && (r.strata_guide_in || iteration != 0))
+    throw std::invalid_argument("add_gradient_atrous: only the first iteration (step 1) reads the gradient samples");
   const Uniforms u{full.width,     full.height, out.width, out.height,
                    1 << iteration, s.sigma_z,   s.sigma_n, r.luminance_in_alpha ? 1u : 0u};
   std::vector<Binding> bindings{{"gradient_in", r.gradient_in}, {"gradient_out", r.gradient_out}};

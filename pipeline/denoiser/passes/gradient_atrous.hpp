@@ -21,12 +21,12 @@ struct GradientAtrousResources {
   // depth_normal.
   std::optional<graph::ResourceId> strata_guide_out;
   std::optional<graph::ResourceId> strata_guide_in;
-  bool samples_in = false;          // the first iteration only (not with strata_guide_in)
+  bool samples_in = false;          // iteration 0 only (step 1; not with strata_guide_in)
   bool luminance_in_alpha = false;  // samples_in: the samples come from pathtrace's split signals
 };
 // Adds "gradient_atrous.<iteration + 1>" with step 2^iteration (sigma_z, sigma_n from settings).
 // Throws std::invalid_argument for both strata guides at once, one not of the gradient's size, or
-// samples_in with strata_guide_in.
+// samples_in with strata_guide_in or past iteration 0.
 graph::PassBuilder add_gradient_atrous(graph::RenderGraph& graph, PipelineCache& pipelines,
                                        const GradientAtrousResources& r, int iteration,
                                        const DenoiseSettings& settings);
