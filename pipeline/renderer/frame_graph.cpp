@@ -76,12 +76,11 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   // Persistent: read next frame as histories.
   const ResourceId depth_normal = g.add_image("depth_normal", w, h, F::RGBA16Uint, Lifetime::Persistent);
   const ResourceId candidates = passes::add_gradient_candidates_image(g, w, h);
+  // Transient.
   // The filtering methods' samples in half floats (pathtrace.comp: what the denoiser keeps of them);
   // raw output and the reference unclamped.
   const bool full_range = !method;
-  const ResourceId illumination =
-      g.add_image("illumination", w, h, full_range ? F::RGBA32F : F::RGBA16F, Lifetime::Persistent);
-  // Transient.
+  const ResourceId illumination = g.add_image("illumination", w, h, full_range ? F::RGBA32F : F::RGBA16F);
   const ResourceId vbuffer = g.add_image("visibility", w, h, F::RGBA32Uint);
   const ResourceId motion = g.add_image("motion", w, h, F::RGBA16F);  // xy used
   const ResourceId albedo = g.add_image("albedo", w, h, F::RGBA16F);
