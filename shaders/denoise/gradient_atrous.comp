@@ -6,9 +6,9 @@
 // first of several iterations) also writes those texels into a 1/3-resolution image; GUIDE_IN (the
 // later ones) reads them there instead of depth_normal (whose every iteration counted 8 bytes a
 // pixel against the strata's 0.9). SAMPLES_IN (the first iteration, where the renderer gives l_cur)
-// reads the gradient samples (l_prev, index, l_cur) and computes each tap's (delta, Delta) itself
-// (common/gradient_sample.glsl), bit for bit what the gradient pass would have stored, so that pass
-// and its image do not run: its dispatch cost more than the nine taps' few operations.
+// reads the gradient samples (l_prev, index, l_cur) and computes (delta, Delta) itself, once a
+// stratum into a shared tile (common/gradient_sample.glsl), bit for bit what the gradient pass would
+// have stored, so that pass and its image do not run.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
