@@ -196,25 +196,43 @@ inline ImageD depth_normal_as_stored(const ImageD& dn) {
 }
 
 // ---- Packed filter texels (shaders/common/filter_texel.glsl) -----------------------------------
-// Read-back buffers of packed colour and surface texels (2 words a pixel each) as the reference's
-// inputs: colour and variance (the halves, exactly), and depth_normal with the packed depth, normal
-// (octahedral again, in double) and depth gradient (dz / z's 8-bit code times the depth, in float
-// as the GPU).
+// The value of an RGB9E5 word's shared exponent's step (2^(e - 24)): the colour's quantum.
+inline double rgb9e5_quantum(std::uint32_t word) {
+  return std::ldexp(1.0, static_cast<int>(word >> 27) - 24);
+}
+// The quantum pack_rgb9e5 gives (r, g, b): the largest channel's binade (at least 2^-16), the
+// next one where it rounds up to 512 steps.
+inline double rgb9e5_quantum(double r, double g, double b) {
+  const double m = std::max({r, g, b, 0.0});
+  int e = m > 0 ? std::max(static_cast<int>(std::floor(std::log2(m))), -16) + 16 : 0;
+  if (std::floor(m / std::ldexp(1.0, e - 24) + 0.5) >= 512) ++e;
+  return std::ldexp(1.0, e - 24);
+}
+// Read-back buffers of the packed colour (as words: width = the buffer's words, height 1, one
+// channel) and surface texels (2 words a pixel) as the reference's inputs: colour (RGB9E5, exactly)
+// and variance (the half, exactly), and depth_normal with the packed depth, normal (octahedral
+// again, in double) and depth gradient (dz / z's 8-bit code times the depth, in float as the GPU).
 struct FilterTexels {
   ImageD color, depth_normal;
 };
-inline FilterTexels unpack_filter_texels(const ImageD& packed_color, const ImageD& packed_surface) {
-  const int w = packed_color.width, h = packed_color.height;
+inline FilterTexels unpack_filter_texels(const ImageD& color_words, const ImageD& packed_surface) {
+  const int w = packed_surface.width, h = packed_surface.height;
+  REQUIRE(color_words.width == w * h + h * ((w + 1) / 2));
   FilterTexels out{ImageD(w, h, 4), ImageD(w, h, 4)};
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      const auto color_word = [&](int c) { return static_cast<std::uint32_t>(packed_color.at(x, y, c)); };
+      const auto color_word = [&](int i) { return static_cast<std::uint32_t>(color_words.at(i, 0, 0)); };
       const auto surface_word = [&](int c) { return static_cast<std::uint32_t>(packed_surface.at(x, y, c)); };
       const auto halves = [](std::uint32_t u) {
         return std::array<double, 2>{half_to_float(static_cast<std::uint16_t>(u & 0xffffu)),
                                      half_to_float(static_cast<std::uint16_t>(u >> 16))};
       };
-      const auto rg = halves(color_word(0)), ba = halves(color_word(1)), nxy = halves(surface_word(1));
+      const std::uint32_t rgb = color_word(y * w + x);
+      const double quantum = rgb9e5_quantum(rgb);
+      const double variance = halves(color_word(w * h + y * ((w + 1) / 2) + x / 2))[x % 2];
+      const auto channel = [&](int c) { return ((rgb >> (9 * c)) & 511u) * quantum; };
+      const std::array<double, 2> rg{channel(0), channel(1)}, ba{channel(2), variance};
+      const auto nxy = halves(surface_word(1));
       const bool z_negative = (surface_word(0) & 0x80000000u) != 0;
       const float z = std::abs(std::bit_cast<float>(surface_word(0) & 0xffffff00u));
       const std::uint32_t code = surface_word(0) & 0xffu;
@@ -288,19 +306,24 @@ struct Compare {
   int worst_x = -1, worst_y = -1, worst_c = -1;
   double got = 0, want = 0;
 };
-// The same with a tolerance per channel: tolerance(want, channel).
+// The same with a tolerance per pixel and channel: tolerance(x, y, channel, want).
 inline Compare compare(const ImageD& got, const ImageD& want, int channels,
-                       const std::function<double(double, int)>& tolerance) {
+                       const std::function<double(int, int, int, double)>& tolerance) {
   Compare out;
   for (int y = 0; y < want.height; ++y)
     for (int x = 0; x < want.width; ++x)
       for (int c = 0; c < channels; ++c) {
         const double g = got.at(x, y, c), w = want.at(x, y, c);
         const double err = std::abs(g - w);
-        const double ratio = std::isfinite(g) ? err / tolerance(w, c) : 1e30;
+        const double ratio = std::isfinite(g) ? err / tolerance(x, y, c, w) : 1e30;
         if (ratio > out.worst_ratio) out = {ratio, err, x, y, c, g, w};
       }
   return out;
+}
+// The same with a tolerance per channel: tolerance(want, channel).
+inline Compare compare(const ImageD& got, const ImageD& want, int channels,
+                       const std::function<double(double, int)>& tolerance) {
+  return compare(got, want, channels, [&tolerance](int, int, int c, double w) { return tolerance(w, c); });
 }
 inline Compare compare(const ImageD& got, const ImageD& want, int channels,
                        const std::function<double(double)>& tolerance) {
