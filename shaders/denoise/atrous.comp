@@ -17,7 +17,9 @@
 // RGBA16F image. HISTORY also writes the result to the colour history (the history tap). COMPOSITE
 // (a one-signal chain's last, packed-in iteration) composites the result (common/composite.glsl),
 // unrounded, instead of writing it to an RGBA16F image for the composite pass: 16 bytes a pixel and
-// a dispatch fewer.
+// a dispatch fewer. RGB9E5_OUT (a packed-in last iteration whose result only the composite reads)
+// writes the colour alone as RGB9E5 (common/filter_texel.glsl) to an R32UI image: 4 bytes a pixel
+// written and read instead of 8.
 // LOCAL_MEAN_SUMS (the local-mean correction, common/local_mean.glsl) also sums the result's
 // luminance over blocks of local_mean_block pixels into block_sums: the first packed iteration with
 // the history tap with the temporal result's terms (the history's correction), a packed-in last
@@ -102,6 +104,8 @@ layout(set = 0, binding = 10) buffer Counters {
   uint zeroed_outputs;
 } counters;
 #include "common/composite.glsl"
+#elif defined(RGB9E5_OUT)
+layout(set = 0, binding = 3, r32ui) writeonly uniform uimage2D color_out;  // the colour alone
 #else
 layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D color_out;
 #endif
@@ -261,6 +265,8 @@ vec4 filter_pixel(ivec2 p) {
 #endif
 #elif defined(COMPOSITE)
   composite_pixel(p, result.rgb);
+#elif defined(RGB9E5_OUT)
+  imageStore(color_out, p, uvec4(pack_rgb9e5(result.rgb), 0u, 0u, 0u));
 #else
   imageStore(color_out, p, stored);
 #endif

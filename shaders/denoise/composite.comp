@@ -3,7 +3,8 @@
 // variant adds the filtered specular signal times its own albedo (pathtrace's SPLIT_SPECULAR). The
 // LOCAL_MEAN variant applies the displayed colour's local-mean correction first (local_mean.comp's
 // last pass, which then runs only where something reads its image), so that the corrected colour
-// is not written and read back.
+// is not written and read back. ILLUMINATION_RGB9E5 reads the illumination as RGB9E5 from an R32UI
+// image (a last a-trous iteration's RGB9E5_OUT: common/filter_texel.glsl).
 // Where a chain ends in a packed a-trous iteration and has one signal, that iteration composites
 // itself (atrous.comp, COMPOSITE) and this pass does not run.
 #version 460
@@ -22,7 +23,12 @@ layout(set = 0, binding = 0) uniform Params {
   int local_mean_radius;  // LOCAL_MEAN: the correction's window, in blocks (local_mean.comp)
   int local_mean_block;   // LOCAL_MEAN: pixels a block's side
 } params;
+#ifdef ILLUMINATION_RGB9E5
+#include "common/filter_texel.glsl"
+layout(set = 0, binding = 1) uniform utexture2D illumination;
+#else
 layout(set = 0, binding = 1) uniform texture2D illumination;
+#endif
 layout(set = 0, binding = 2) uniform texture2D albedo;
 layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D hdr;
 layout(set = 0, binding = 4, rgba8) writeonly uniform image2D display;
@@ -48,7 +54,11 @@ layout(set = 0, binding = 5) buffer Counters {
 void main() {
   ivec2 p = invocation_pixel();
   if (!inside(p, params.width, params.height)) return;
+#ifdef ILLUMINATION_RGB9E5
+  vec4 light = vec4(unpack_rgb9e5(texelFetch(illumination, p, 0).r), 0.0);
+#else
   vec4 light = texelFetch(illumination, p, 0);
+#endif
 #ifdef LOCAL_MEAN
   const ivec2 size = ivec2(params.width, params.height);
   light = local_mean_corrected(light, local_mean_scale(p, size, params.local_mean_block, params.local_mean_radius, true));

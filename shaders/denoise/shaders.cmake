@@ -16,8 +16,10 @@ asvgf_add_shader(atrous SOURCE denoise/atrous.comp
                           middle=PACKED_IN,PACKED_OUT middle_history=PACKED_IN,PACKED_OUT,HISTORY
                           middle_corrects_history=PACKED_IN,PACKED_OUT,CORRECTS_HISTORY
                           last=PACKED_IN last_history=PACKED_IN,HISTORY last_sums=PACKED_IN,LOCAL_MEAN_SUMS
+                          last_sums_rgb9e5=PACKED_IN,LOCAL_MEAN_SUMS,RGB9E5_OUT
                           last_composite=PACKED_IN,COMPOSITE last_history_composite=PACKED_IN,HISTORY,COMPOSITE)
-asvgf_add_shader(composite SOURCE denoise/composite.comp VARIANTS one split=SPLIT local_mean=LOCAL_MEAN)
+asvgf_add_shader(composite SOURCE denoise/composite.comp VARIANTS one split=SPLIT local_mean=LOCAL_MEAN
+                 local_mean_rgb9e5=LOCAL_MEAN,ILLUMINATION_RGB9E5)
 asvgf_add_shader(local_mean SOURCE denoise/local_mean.comp VARIANTS blocks=BLOCKS blocks_filtered=BLOCKS,TEMPORAL_SUMS box=BOX apply)
 asvgf_add_shader(pack_surface SOURCE denoise/pack_surface.comp)
 asvgf_add_shader(gradient_reprojected SOURCE denoise/gradient_reprojected.comp)

@@ -208,6 +208,33 @@ inline double rgb9e5_quantum(double r, double g, double b) {
   if (std::floor(m / std::ldexp(1.0, e - 24) + 0.5) >= 512) ++e;
   return std::ldexp(1.0, e - 24);
 }
+// pack_rgb9e5's word for (r, g, b) (values of at most 24 significant bits, as fp32 holds them).
+inline std::uint32_t pack_rgb9e5(double r, double g, double b) {
+  const auto clamped = [](double v) { return std::clamp(v, 0.0, 65408.0); };
+  const double c[3] = {clamped(r), clamped(g), clamped(b)};
+  const double quantum = rgb9e5_quantum(c[0], c[1], c[2]);
+  std::uint32_t word = static_cast<std::uint32_t>(std::lround(std::log2(quantum))) + 24u;
+  word <<= 27;
+  for (int i = 0; i < 3; ++i) word |= static_cast<std::uint32_t>(std::floor(c[i] / quantum + 0.5)) << (9 * i);
+  return word;
+}
+// An image's colour as RGB9E5 words (one channel) and as what they hold (rgb, alpha 0).
+inline ImageD rgb9e5_words(const ImageD& color) {
+  ImageD out(color.width, color.height, 1);
+  for (int y = 0; y < color.height; ++y)
+    for (int x = 0; x < color.width; ++x)
+      out.at(x, y, 0) = pack_rgb9e5(color.at(x, y, 0), color.at(x, y, 1), color.at(x, y, 2));
+  return out;
+}
+inline ImageD rgb9e5_values(const ImageD& words) {
+  ImageD out(words.width, words.height, 4);
+  for (int y = 0; y < words.height; ++y)
+    for (int x = 0; x < words.width; ++x) {
+      const auto word = static_cast<std::uint32_t>(words.at(x, y, 0));
+      for (int c = 0; c < 3; ++c) out.at(x, y, c) = ((word >> (9 * c)) & 511u) * rgb9e5_quantum(word);
+    }
+  return out;
+}
 // Read-back buffers of the packed colour (as words: width = the buffer's words, height 1, one
 // channel) and surface texels (2 words a pixel) as the reference's inputs: colour (RGB9E5, exactly)
 // and variance (the half, exactly), and depth_normal with the packed depth, normal (octahedral

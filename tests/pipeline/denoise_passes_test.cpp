@@ -939,15 +939,32 @@ TEST_CASE(
       const auto black = harness.input(g, "black", ImageD(w, h, 4), F::RGBA16F);
       const passes::LocalMeanImages second = passes::add_local_mean(
           g, pipelines, {black, filtered_id, shared, "local_mean.shared", gated, images.block_sums}, settings);
-      ImageD got, got_shared, got_hdr;
+      ImageD got, got_shared, got_hdr, got_hdr_rgb9e5, want_rgb9e5;
       if (gated) {
         const auto hdr = g.add_image("hdr", w, h, F::RGBA32F);
-        passes::add_composite(
-            g, pipelines,
-            {filtered_id, harness.input(g, "albedo", ImageD(w, h, 4, 1.0), F::RGBA16F), hdr,
-             g.add_image("display", w, h, F::RGBA8Unorm), counters.import(g), std::nullopt, std::nullopt, second},
-            settings);
+        const auto albedo_id = harness.input(g, "albedo", ImageD(w, h, 4, 1.0), F::RGBA16F);
+        passes::add_composite(g, pipelines,
+                              {filtered_id, albedo_id, hdr, g.add_image("display", w, h, F::RGBA8Unorm),
+                               counters.import(g), std::nullopt, std::nullopt, second},
+                              settings);
         harness.readback(g, hdr, &got_hdr);
+        // The same correction of the filtered colour read as RGB9E5 (a last a-trous iteration's
+        // RGB9E5_OUT), with the box means of the fp16 colour's sums: the correction pass over the
+        // values the words hold, with those sums.
+        const ImageD words = rgb9e5_words(quantize(filtered, F::RGBA16F));
+        const auto hdr_rgb9e5 = g.add_image("hdr.rgb9e5", w, h, F::RGBA32F);
+        passes::add_composite(g, pipelines,
+                              {harness.input(g, "filtered.rgb9e5", words, F::R32Uint), albedo_id, hdr_rgb9e5,
+                               g.add_image("display.rgb9e5", w, h, F::RGBA8Unorm), counters.import(g), std::nullopt,
+                               std::nullopt, second},
+                              settings);
+        const auto corrected_values = g.add_image("corrected.rgb9e5", w, h, F::RGBA16F);
+        passes::LocalMeanResources values{black, harness.input(g, "filtered.values", rgb9e5_values(words), F::RGBA16F),
+                                          corrected_values, "local_mean.rgb9e5", gated};
+        values.block_sums = second.block_sums;
+        passes::add_local_mean(g, pipelines, values, settings);
+        harness.readback(g, hdr_rgb9e5, &got_hdr_rgb9e5);
+        harness.readback(g, corrected_values, &want_rgb9e5);
       }
       harness.readback(g, corrected, &got);
       harness.readback(g, shared, &got_shared);
@@ -962,6 +979,7 @@ TEST_CASE(
       const auto exact = [](double) { return 1.0; };
       CHECK(compare(got_shared, got, 4, exact).worst_error == 0.0);
       if (gated) CHECK(compare(got_hdr, got, 3, exact).worst_error == 0.0);
+      if (gated) CHECK(compare(got_hdr_rgb9e5, want_rgb9e5, 3, exact).worst_error == 0.0);
     }
   }
 }
@@ -1037,6 +1055,13 @@ TEST_CASE(
       a2.corrects_history = {want_history.box_means, lmb.block, lmb.radius};
       passes::add_atrous(g, pipelines, a2, 1, settings);
       passes::add_atrous(g, pipelines, a3, 2, settings);
+      // The same last iteration writing its colour as RGB9E5 for the composite (RGB9E5_OUT).
+      passes::AtrousResources a3_rgb9e5 = a3;
+      a3_rgb9e5.color_out = g.add_image("atrous.3.rgb9e5", uw, uh, F::R32Uint);
+      const auto display_sums_rgb9e5 = passes::add_local_mean_sums_image(g, "display.rgb9e5", uw, uh, k);
+      a3_rgb9e5.local_mean_sums = {display_sums_rgb9e5, history_sums, block};
+      a3_rgb9e5.name_suffix = ".rgb9e5";
+      passes::add_atrous(g, pipelines, a3_rgb9e5, 2, settings);
       const auto want_display = passes::add_local_mean(
           g, pipelines,
           {integrated, last, g.add_image("corrected", uw, uh, F::RGBA16F), "ref", true, want_history.block_sums},
@@ -1048,6 +1073,10 @@ TEST_CASE(
       harness.readback_buffer(g, surface, w, h, 2, &got_surface);
       harness.readback(g, history_sums, &got_h);
       harness.readback(g, display_sums, &got_d);
+      ImageD got_d_rgb9e5, got_last, got_last_words;
+      harness.readback(g, display_sums_rgb9e5, &got_d_rgb9e5);
+      harness.readback(g, last, &got_last);
+      harness.readback(g, a3_rgb9e5.color_out, &got_last_words);
       harness.readback(g, want_history.block_sums, &want_h);
       harness.readback(g, want_display.block_sums, &want_d);
       harness.run(g);
@@ -1068,6 +1097,10 @@ TEST_CASE(
       CHECK(compare(got_h, want_h, 4, exact).worst_error == 0.0);
       CHECK(compare(got_untapped, want_h, 4, exact).worst_error == 0.0);
       CHECK(compare(got_d, want_d, 4, exact).worst_error == 0.0);
+      // The RGB9E5 twin: the same sums (of its fp16-rounded result), the colour within its rounding.
+      CHECK(compare(got_d_rgb9e5, want_d, 4, exact).worst_error == 0.0);
+      DENOISE_CHECK_CLOSE(compare(rgb9e5_values(got_last_words), got_last, 3, packed_tolerance(got_last, 0)),
+                          "last iteration's RGB9E5 colour");
       CHECK(compare(got_history, want_history_image, 4, exact).worst_error == 0.0);
       CHECK(want_h.at(0, 0, 3) == double(std::min(block, h) * std::min(block, w)));  // a whole block's pixels
     }

@@ -235,8 +235,9 @@ TEST_CASE(
     return out;
   };
   const std::uint64_t packed_bytes = 32 * 16 * 8;
+  // (atrous.5.rgb9e5: the last iteration's colour for the composite's local-mean correction.)
   CHECK(kinds(packed_bytes, asvgf::AtrousKernel::B3Spline) ==
-        "atrous.1:buffer atrous.2:buffer atrous.3:buffer atrous.4:buffer atrous.5:image ");
+        "atrous.1:buffer atrous.2:buffer atrous.3:buffer atrous.4:buffer atrous.5:image atrous.5.rgb9e5:image ");
   CHECK(kinds(packed_bytes - 1, asvgf::AtrousKernel::B3Spline) ==
         "atrous.1:image atrous.2:image atrous.3:image atrous.4:image atrous.5:image ");
   CHECK(kinds(packed_bytes, asvgf::AtrousKernel::Box) ==
@@ -255,12 +256,13 @@ TEST_CASE(
   s.scene_moved = false;
   {
     // The default (the local-mean correction on): the corrected colour's own pass writes what only a
-    // reader of the denoiser's outputs wants; the last iteration's output is read by the correction.
+    // reader of the denoiser's outputs wants; the last iteration's RGB9E5 output is read by the
+    // composite's correction, and its RGBA16F twin by nothing.
     scene.gpu.update(0);
     auto compiled = runtime.compile(builder.build(s, scene.gpu, scene.targets(16, 16)));
     std::map<std::string, std::string> culled;
     for (const auto& c : compiled.culled) culled[c.name] = c.reason;
-    for (const char* name : {"variance", "local_mean"}) {
+    for (const char* name : {"variance", "local_mean", "atrous.5.rgba16f"}) {
       CAPTURE(name);
       REQUIRE(culled.count(name) == 1);
       CHECK(culled[name].find("nothing that contributes") != std::string::npos);

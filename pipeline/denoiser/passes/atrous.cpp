@@ -16,6 +16,7 @@
 #include "shaders/atrous.last_history.hpp"
 #include "shaders/atrous.last_history_composite.hpp"
 #include "shaders/atrous.last_sums.hpp"
+#include "shaders/atrous.last_sums_rgb9e5.hpp"
 #include "shaders/atrous.middle.hpp"
 #include "shaders/atrous.middle_corrects_history.hpp"
 #include "shaders/atrous.middle_history.hpp"
@@ -30,9 +31,10 @@ using Uniforms = asvgf::shaders::atrous_plain_uniforms::Params;
 // The variant for the chain position: a storage buffer (the packed filter texels) in or out, the
 // history tap, composite folded in, the local mean's block sums or history correction.
 const hal::ShaderInfo& atrous_shader(bool packed_in, bool packed_out, bool history, bool composite, bool sums,
-                                     bool corrects_history) {
+                                     bool corrects_history, bool rgb9e5_out) {
   namespace sh = asvgf::shaders;
   if (corrects_history) return sh::atrous_middle_corrects_history;
+  if (rgb9e5_out) return sh::atrous_last_sums_rgb9e5;
   if (sums) return packed_in ? sh::atrous_last_sums : history ? sh::atrous_first_history_sums : sh::atrous_first_sums;
   if (composite) return history ? sh::atrous_last_history_composite : sh::atrous_last_composite;
   if (packed_in) {
@@ -81,6 +83,12 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
       throw std::invalid_argument("add_atrous: the local mean's blocks are 1, 2, 4 or 8 pixels, not " +
                                   std::to_string(b));
   }
+  const auto& out_decl = graph.resource(r.color_out);
+  const bool rgb9e5_out =
+      !composite && out_decl.kind == hal::ResourceKind::Image && out_decl.format == hal::Format::R32Uint;
+  if (rgb9e5_out && !(packed_in && !r.color_history && r.local_mean_sums))
+    throw std::invalid_argument("add_atrous: an RGB9E5 (R32Uint) color_out '" + out_decl.name +
+                                "' is written by a packed-in last iteration with the local mean's block sums only");
   if (r.corrects_history && !(packed_in && packed_out && r.color_history))
     throw std::invalid_argument(
         "add_atrous: only a packed middle iteration corrects the colour history, and it "
@@ -135,10 +143,12 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
     if (r.local_mean_sums->temporal_sums) bindings.push_back({"temporal_sums", *r.local_mean_sums->temporal_sums});
   }
   if (r.corrects_history) bindings.push_back({"box_means", r.corrects_history->box_means});
-  const hal::ShaderInfo& shader = atrous_shader(packed_in, packed_out, r.color_history.has_value(), composite,
-                                                r.local_mean_sums.has_value(), r.corrects_history.has_value());
+  const hal::ShaderInfo& shader =
+      atrous_shader(packed_in, packed_out, r.color_history.has_value(), composite, r.local_mean_sums.has_value(),
+                    r.corrects_history.has_value(), rgb9e5_out);
   const auto pipeline = pipelines.get<Uniforms>(shader);
-  const std::string name = r.prefix + "atrous." + std::to_string(iteration + 1) + (composite ? "+composite" : "");
+  const std::string name =
+      r.prefix + "atrous." + std::to_string(iteration + 1) + (composite ? "+composite" : "") + r.name_suffix;
   return add_compute_pass(graph, name, shader, pipeline, std::move(bindings), to_bytes(u), {u.width, u.height, 1});
 }
 

@@ -25,9 +25,11 @@ struct AtrousResources {
   // an image in is the first iteration only (it reads a shared-memory tile that needs step 1): it
   // writes `surface`, and it estimates the variance itself: its color_in is the temporal pass's
   // output (rgb, temporal variance) and it also reads `estimate` (the variance pass's other inputs).
-  graph::ResourceId color_in = 0;                  // read
-  graph::ResourceId depth_normal = 0;              // read (not by packed-in iterations): RGBA16UI; the size
-  graph::ResourceId color_out = 0;                 // written (not with `composite`)
+  graph::ResourceId color_in = 0;      // read
+  graph::ResourceId depth_normal = 0;  // read (not by packed-in iterations): RGBA16UI; the size
+  // written (not with `composite`); a packed-in last iteration with local_mean_sums may write an R32Uint
+  // image instead: the colour alone as RGB9E5, for the composite's local-mean correction to read
+  graph::ResourceId color_out = 0;
   std::optional<graph::ResourceId> color_history;  // also written (persistent RGBA16F) at the history tap
   std::string prefix;                              // of the pass name: "specular." for the second signal
   // Packed surface texels (packed_surface_bytes: depth, its gradient, normal): written by the first packed
@@ -60,6 +62,8 @@ struct AtrousResources {
     int block = 1, radius = 0;  // local_mean.hpp's LocalMeanBlocks
   };
   std::optional<HistoryCorrection> corrects_history;
+  // Appended to the pass name: a twin that writes the same iteration's result in another form.
+  std::string name_suffix;
 };
 // Adds "<prefix>atrous.<iteration + 1>" with step 2^iteration and the settings' kernel and sigmas.
 // The dispatch covers depth_normal's size. Throws std::invalid_argument for a buffer out from an
@@ -67,8 +71,9 @@ struct AtrousResources {
 // than the sizes below, for a packed iteration without `surface`, for the first packed iteration
 // without moments (or moments given to another), for `composite` on another iteration or with a
 // specular signal, for local_mean_sums anywhere but the first packed iteration (without
-// temporal_sums) or a packed-in last one without the history tap (with them), and for
-// corrects_history anywhere but a packed middle iteration with color_history.
+// temporal_sums) or a packed-in last one without the history tap (with them), for an R32Uint
+// color_out anywhere but such a last one, and for corrects_history anywhere but a packed middle
+// iteration with color_history.
 // The packed buffers' sizes for a width x height image (shaders/common/filter_texel.glsl): the
 // colour's (a word a pixel, then the variances, two halves a word and ceil(width / 2) words a row)
 // and the surface's (8 bytes a pixel).

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "shaders/composite.local_mean.hpp"
+#include "shaders/composite.local_mean_rgb9e5.hpp"
 #include "shaders/composite.one.hpp"
 #include "shaders/composite.split.hpp"
 
@@ -21,12 +22,18 @@ graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipel
   const bool split = r.specular.has_value();
   if (split && r.local_mean)
     throw std::invalid_argument("add_composite: the local-mean correction is applied here for one signal only");
+  const auto& illumination = graph.resource(r.illumination);
+  const bool rgb9e5 = illumination.kind == hal::ResourceKind::Image && illumination.format == hal::Format::R32Uint;
+  if (rgb9e5 && !r.local_mean)
+    throw std::invalid_argument("add_composite: an RGB9E5 illumination ('" + illumination.name +
+                                "', R32Uint) is read with the local-mean correction only");
   const LocalMeanBlocks blocks = r.local_mean ? r.local_mean->blocks : LocalMeanBlocks{};
   const Uniforms u{decl.width,    decl.height, s.exposure, static_cast<std::uint32_t>(s.tonemap),
                    blocks.radius, blocks.block};
-  const hal::ShaderInfo& shader = split          ? asvgf::shaders::composite_split
-                                  : r.local_mean ? asvgf::shaders::composite_local_mean
-                                                 : asvgf::shaders::composite_one;
+  const hal::ShaderInfo& shader =
+      split          ? asvgf::shaders::composite_split
+      : r.local_mean ? (rgb9e5 ? asvgf::shaders::composite_local_mean_rgb9e5 : asvgf::shaders::composite_local_mean)
+                     : asvgf::shaders::composite_one;
   const auto pipeline = pipelines.get<Uniforms>(shader);
   std::vector<Binding> bindings{{"illumination", r.illumination},
                                 {"albedo", r.albedo},

@@ -12,11 +12,13 @@
 namespace asvgf::passes {
 
 struct CompositeResources {
-  graph::ResourceId illumination = 0;  // read: any float format (filtered colour, or raw samples)
-  graph::ResourceId albedo = 0;        // read: RGBA16F
-  graph::ResourceId hdr = 0;           // written: RGBA32F
-  graph::ResourceId display = 0;       // written: RGBA8Unorm, sRGB-encoded
-  graph::ResourceId counters = 0;      // read-written SanitizeCounters buffer: zeroed outputs
+  // read: any float format (filtered colour, or raw samples); with local_mean also an R32Uint image of
+  // RGB9E5 colour (a last a-trous iteration's, atrous.hpp)
+  graph::ResourceId illumination = 0;
+  graph::ResourceId albedo = 0;    // read: RGBA16F
+  graph::ResourceId hdr = 0;       // written: RGBA32F
+  graph::ResourceId display = 0;   // written: RGBA8Unorm, sRGB-encoded
+  graph::ResourceId counters = 0;  // read-written SanitizeCounters buffer: zeroed outputs
   // The filtered specular signal and its albedo, added (pathtrace's split signals).
   std::optional<graph::ResourceId> specular, specular_albedo;
   // The displayed colour's local-mean correction, applied here (one signal only): its box means,

@@ -33,11 +33,14 @@ struct Chain {
   std::optional<graph::ResourceId> local_mean_sums;
   // The displayed colour's block sums, where the last a-trous iteration made them.
   std::optional<graph::ResourceId> display_sums;
+  // The last iteration's result as RGB9E5 (R32Uint), for the composite's local-mean correction.
+  std::optional<graph::ResourceId> filtered_rgb9e5;
 };
 Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::ResourceId signal, graph::ResourceId albedo,
                 const std::string& prefix, const GraphDenoiserInputs& in, std::optional<graph::ResourceId> gradient,
                 const DenoiseSettings& s, Filter filter, std::optional<CompositeResources> composite,
-                std::optional<graph::ResourceId> virtual_motion = std::nullopt, bool local_mean = false) {
+                std::optional<graph::ResourceId> virtual_motion = std::nullopt, bool local_mean = false,
+                bool rgb9e5_display = false) {
   using F = hal::Format;
   using graph::Lifetime;
   using graph::ResourceId;
@@ -106,7 +109,18 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
       sums = {add_local_mean_sums_image(graph, prefix + "local_mean.history", w, h, k), std::nullopt, blocks.block};
     else if (local_mean && !tap && last_packed && c.local_mean_sums)
       sums = {add_local_mean_sums_image(graph, prefix + "local_mean", w, h, k), c.local_mean_sums, blocks.block};
-    if (last_packed && composite) {
+    if (last_packed && sums && rgb9e5_display) {
+      // The composite reads the result as RGB9E5 (4 bytes a pixel written and read instead of 8); the
+      // RGBA16F result stays declared, by a twin that runs only where something reads it.
+      AtrousResources r{current,      in.depth_normal, graph.add_image(name + ".rgb9e5", w, h, F::R32Uint),
+                        std::nullopt, prefix,          surface};
+      r.local_mean_sums = sums;
+      add_atrous(graph, pipelines, r, i, s);
+      c.filtered_rgb9e5 = r.color_out;
+      AtrousResources twin{current, in.depth_normal, next, std::nullopt, prefix, surface};
+      twin.name_suffix = ".rgba16f";
+      add_atrous(graph, pipelines, twin, i, s);
+    } else if (last_packed && composite) {
       // The filtered image is still declared, by an iteration without the history tap that only
       // runs where something reads it (the tests' readbacks): the graph leaves it out otherwise.
       add_atrous(graph, pipelines, {current, in.depth_normal, next, history, prefix, surface, {}, composite}, i, s);
@@ -213,8 +227,9 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
         in.specular || local_mean
             ? std::nullopt
             : std::optional(CompositeResources{0, in.albedo, in.hdr, in.display, in.counters, {}, {}});
+    // With one signal, the composite applies the correction to the last iteration's RGB9E5 result.
     diffuse = add_chain(graph, pipelines, in.illumination, in.albedo, "", in, out.gradient, s, filter, composite,
-                        std::nullopt, local_mean);
+                        std::nullopt, local_mean, local_mean && !in.specular);
     if (local_mean) {
       // The corrected colour's image is declared for what reads it (the tests, the debug views);
       // with one signal the composite applies the correction itself and nothing else does.
@@ -226,7 +241,7 @@ GraphDenoiserOutputs add_denoiser(graph::RenderGraph& graph, PipelineCache& pipe
                           diffuse.display_sums ? std::nullopt : diffuse.local_mean_sums, diffuse.display_sums},
                          s);
       if (!in.specular) display_local_mean = images;
-      composite_input = diffuse.filtered;
+      composite_input = diffuse.filtered_rgb9e5.value_or(diffuse.filtered);
       diffuse.filtered = corrected;
     }
     out.filtered = diffuse.filtered;
