@@ -1,61 +1,39 @@
 // common/filter_texel.glsl: what the a-trous iterations between a chain's first and last pass on,
-// in two storage buffers: the colour buffer, which every iteration writes, and the surface buffer,
-// which the first writes and the others only read (the surface does not change between iterations:
-// 8 bytes a pixel read instead of 16 read and written). A tap is three 32- and 64-bit loads and a
-// normal that needs no octahedral decode: the taps' fetches and their arithmetic (the octahedral
-// decode the largest part) each bounded an iteration (docs/performance.md).
-//   colour   W x H words in rows, RGB9E5: the colour's three 9-bit mantissas and a shared exponent;
-//            then H rows of ceil(W / 2) words: the variance as halves, pixel 2i's in word i's low
-//            half and pixel 2i + 1's in its high half, so that a pair never straddles two rows (the
-//            even pixel's invocation writes the word). 6 bytes a pixel (and a half word a row
-//            where W is odd) against 8 for four halves.
+// in two storage buffers of one uvec2 a pixel (in rows): the colour texel, which every iteration
+// writes, and the surface texel, which the first writes and the others only read (the surface does
+// not change between iterations: 8 bytes a pixel read instead of 16 read and written). A tap is two
+// 64-bit loads and a normal that needs no octahedral decode: the taps' texel fetches and their
+// arithmetic (the octahedral decode the largest part) each bounded an iteration (docs/performance.md).
+//   colour   x: r, g as halves      y: b, variance as halves
 //   surface  x: depth (float bits; 0 = no hit), negated where the normal's z is negative; its low 8
 //               bits (depth_normal rounds them away) hold the centre's depth gradient (below)
 //            y: normal x, y as halves; z = +-sqrt(1 - x^2 - y^2) with the depth's sign
-// The colour keeps 9 bits of the largest channel's mantissa (relative error at most 2^-9 there,
-// against fp16's 2^-11; smaller channels keep the same absolute step): at 128x128 the report's
-// relMSE moved by +0.01% (docs/performance.md). The variance loses nothing against the RGBA16F
-// image it replaces; the depth loses nothing against depth_normal's. The normal's x and y round to
-// half (one fp16 ulp, 2^-11, at worst); z rebuilt from them is within min(0.037, 1.4e-3 / |z|): near
-// z = 0 the rebuild is ill-conditioned (up to 2 degrees where a smooth surface's normal crosses
-// z = 0: neighbours there weigh about 0.8 instead of 1 under sigma_n = 128). Two better-conditioned
-// layouts cost more than they gave: x, y as snorm16 (0.4 degrees) and rebuilding the largest
-// component (docs/performance.md). A normal decoded twice is the same, so equal normals weigh 1 (to
-// fp32 rounding). The depth gradient dz, which only the centre reads (it scales the depth weight's
+// The colour and variance lose nothing against the RGBA16F images they replace; the depth loses
+// nothing against depth_normal's. The normal's x and y round to half (one fp16 ulp, 2^-11, at
+// worst); z rebuilt from them is within min(0.037, 1.4e-3 / |z|): near z = 0 the rebuild is
+// ill-conditioned (up to 2 degrees where a smooth surface's normal crosses z = 0: neighbours there
+// weigh about 0.8 instead of 1 under sigma_n = 128). Two better-conditioned layouts cost more than
+// they gave: x, y as snorm16 (0.4 degrees) and rebuilding the largest component
+// (docs/performance.md). A normal decoded twice is the same, so equal normals weigh 1 (to fp32
+// rounding). The depth gradient dz, which only the centre reads (it scales the depth weight's
 // tolerance), is kept as r = dz / z in 8 bits, a float with 5 exponent and 3 mantissa bits: codes
 // 1..255 are 2^(e - 20) (1 + m / 8), e = code >> 3, m = code & 7 (2^-20 to 3840, within 1/16 of r);
 // code 0 is 0 (r below 2^-20: there the 1e-3 z floor of the tolerance holds unless sigma_z x step
 // exceeds about 260), larger r saturates. So the gradient costs no image and no bytes of its own.
-// Read on the CPU by the tests' unpack_filter_texels (tests/pipeline/denoise_harness.hpp); the sizes
-// are denoiser/passes/atrous.hpp's packed_color_bytes and packed_surface_bytes.
+// Read on the CPU by the tests' unpack_filter_texels (tests/pipeline/denoise_harness.hpp).
 #ifndef ASVGF_COMMON_FILTER_TEXEL_GLSL
 #define ASVGF_COMMON_FILTER_TEXEL_GLSL
 
 #include "common/color.glsl"
 
-// RGB9E5 (Vulkan's E5B9G9R9_UFLOAT_PACK32: r, g, b in bits 0-8, 9-17, 18-26 as 9-bit mantissas without
-// an implicit one, a shared exponent with bias 15 in 27-31), rounded to nearest; negative values 0,
-// at most 65408 ((511 / 512) 2^16).
-uint pack_rgb9e5(vec3 rgb) {
-  const vec3 c = clamp(rgb, vec3(0.0), vec3(65408.0));
-  const float m = max(c.r, max(c.g, c.b));
-  // max(-16, floor(log2 m)) + 16, from the float's exponent field (0 for m = 0: -127)
-  int e = max(int(floatBitsToUint(m) >> 23) - 127, -16) + 16;
-  // 2^(24 - e): the mantissas' scale; rounding the largest up to 512 takes the next exponent
-  if (floor(m * uintBitsToFloat(uint(151 - e) << 23) + 0.5) >= 512.0) ++e;
-  const uvec3 q = uvec3(floor(c * uintBitsToFloat(uint(151 - e) << 23) + 0.5));
-  return q.r | (q.g << 9) | (q.b << 18) | (uint(e) << 27);
+// Colour and variance as four halves (finite, clamped to the fp16 range): lossless for the RGBA16F
+// values the filter carries.
+uvec2 pack_color_halves(vec4 color_variance) {
+  // Rounded first: packHalf2x16's rounding, like a store's, is the implementation's (common/color.glsl).
+  const vec4 v = round_to_half_clamped(color_variance);
+  return uvec2(packHalf2x16(v.rg), packHalf2x16(v.ba));
 }
-vec3 unpack_rgb9e5(uint u) {
-  return vec3(uvec3(u, u >> 9, u >> 18) & 511u) * uintBitsToFloat(((u >> 27) + 103u) << 23);
-}
-
-// The colour buffer's word indices of pixel q: its colour, and the word holding its variance (in
-// the half that variance_half_shift gives) in an image of size.x x size.y.
-int color_word_index(ivec2 q, ivec2 size) { return q.y * size.x + q.x; }
-int variance_word_index(ivec2 q, ivec2 size) { return size.x * size.y + q.y * ((size.x + 1) >> 1) + (q.x >> 1); }
-uint variance_half_shift(ivec2 q) { return uint(q.x & 1) << 4; }
-float unpack_variance_half(uint word, ivec2 q) { return unpackHalf2x16(word >> variance_half_shift(q)).x; }
+vec4 unpack_color_halves(uvec2 u) { return vec4(unpackHalf2x16(u.x), unpackHalf2x16(u.y)); }
 
 // The relative depth gradient's 8-bit code (above); 0 for z = 0.
 const uint kGradientExponentBias = 127u - 20u;
@@ -69,6 +47,30 @@ uint pack_relative_gradient(float z, float dz) {
 }
 float unpack_relative_gradient(uint code) {
   return code == 0u ? 0.0 : uintBitsToFloat((code + (kGradientExponentBias << 3)) << 20);
+}
+
+float color_halves_variance(uvec2 u) { return unpackHalf2x16(u.y).y; }
+
+// RGB9E5 (Vulkan's E5B9G9R9_UFLOAT_PACK32: r, g, b in bits 0-8, 9-17, 18-26 as 9-bit mantissas
+// without an implicit one, a shared exponent with bias 15 in 27-31), rounded to nearest; negative
+// values 0, at most 65408 ((511 / 512) 2^16). The last iteration's colour for the composite
+// (atrous.comp's RGB9E5_OUT): the largest channel keeps 9 bits (a relative error of at most 2^-9
+// there, against fp16's 2^-11), the others the same absolute step. As the iterations' colour texel
+// (4 bytes and the variance's half apart, instead of 8) it moved 16 B a pixel less at 1080p but
+// cost the iterations 11% more time on an H100 (the decode and a third load a tap, in passes bound
+// by their instructions: docs/performance.md, "The colour in four bytes").
+uint pack_rgb9e5(vec3 rgb) {
+  const vec3 c = clamp(rgb, vec3(0.0), vec3(65408.0));
+  const float m = max(c.r, max(c.g, c.b));
+  // max(-16, floor(log2 m)) + 16, from the float's exponent field (0 for m = 0: -127)
+  int e = max(int(floatBitsToUint(m) >> 23) - 127, -16) + 16;
+  // 2^(24 - e): the mantissas' scale; rounding the largest up to 512 takes the next exponent
+  if (floor(m * uintBitsToFloat(uint(151 - e) << 23) + 0.5) >= 512.0) ++e;
+  const uvec3 q = uvec3(floor(c * uintBitsToFloat(uint(151 - e) << 23) + 0.5));
+  return q.r | (q.g << 9) | (q.b << 18) | (uint(e) << 27);
+}
+vec3 unpack_rgb9e5(uint u) {
+  return vec3(uvec3(u, u >> 9, u >> 18) & 511u) * uintBitsToFloat(((u >> 27) + 103u) << 23);
 }
 
 // z > 0 as depth_normal holds it (its low 8 bits 0) with a unit normal n and the depth gradient

@@ -54,11 +54,9 @@ const int kGroupX = 16;
 const int kGroupY = 8;
 layout(local_size_x = 16, local_size_y = 8) in;
 #elif defined(PACKED_IN)
-// 16x4: a warp of 32 covers 16x2 pixels, so a tap's row of 8-byte surface texels is one whole
-// 128-byte line; 8x8's 8x4 warps read half lines, twice the requests, which bounded the large steps
+// 16x4: a warp of 32 covers 16x2 pixels, so a tap's row of 8-byte texels is one whole 128-byte line
+// in each buffer; 8x8's 8x4 warps read half lines, twice the requests, which bounded the large steps
 // (docs/performance.md).
-const int kGroupX = 16;
-const int kGroupY = 4;
 layout(local_size_x = 16, local_size_y = 4) in;
 #else
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -79,7 +77,7 @@ layout(set = 0, binding = 0) uniform Params {
   int local_mean_radius;  // CORRECTS_HISTORY: the correction's window, in blocks
 } params;
 #ifdef PACKED_IN
-layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uint words[]; } color_in;
+layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec2 texels[]; } color_in;
 layout(set = 0, binding = 5, std430) readonly buffer SurfaceIn { uvec2 texels[]; } surface;
 #elif defined(FIRST_PACKED)
 layout(set = 0, binding = 1) uniform texture2D integrated;  // rgb colour, a temporal variance
@@ -91,7 +89,7 @@ layout(set = 0, binding = 1) uniform texture2D color_in;  // rgb colour, a varia
 layout(set = 0, binding = 2) uniform utexture2D depth_normal;
 #endif
 #ifdef PACKED_OUT
-layout(set = 0, binding = 3, std430) writeonly buffer ColorOut { uint words[]; } color_out;
+layout(set = 0, binding = 3, std430) writeonly buffer ColorOut { uvec2 texels[]; } color_out;
 #elif defined(COMPOSITE)
 layout(set = 0, binding = 7) uniform texture2D albedo;
 layout(set = 0, binding = 8, rgba32f) writeonly uniform image2D hdr;
@@ -131,9 +129,8 @@ layout(set = 0, binding = 7) uniform texture2D albedo;  // the variance estimate
 #include "common/variance_estimate.glsl"
 #endif
 
-ivec2 image_size() { return ivec2(params.width, params.height); }
-ivec2 clamp_pixel(ivec2 q) { return clamp(q, ivec2(0), image_size() - 1); }
-// A pixel's surface texel in the packed buffer (rows).
+ivec2 clamp_pixel(ivec2 q) { return clamp(q, ivec2(0), ivec2(params.width, params.height) - 1); }
+// A pixel's texels in the packed buffers (rows).
 int texel_index(ivec2 q) { return q.y * int(params.width) + q.x; }
 
 // What a tap reads: colour and variance, depth (0: no hit) and unit normal.
@@ -174,14 +171,12 @@ float variance_at(ivec2 q) { return tile_color[tile_index(q)].a; }
 #elif defined(PACKED_IN)
 // Storage-buffer loads, not texel fetches: the fetches' issue rate bounded the iteration
 // (docs/performance.md).
-float variance_at(ivec2 q) {
-  return unpack_variance_half(color_in.words[variance_word_index(q, image_size())], q);
-}
 Tap read_tap(ivec2 q) {
-  const uvec2 s = surface.texels[texel_index(q)];
-  return Tap(vec4(unpack_rgb9e5(color_in.words[color_word_index(q, image_size())]), variance_at(q)),
-             filter_surface_depth(s), filter_surface_normal(s));
+  const int i = texel_index(q);
+  const uvec2 s = surface.texels[i];
+  return Tap(unpack_color_halves(color_in.texels[i]), filter_surface_depth(s), filter_surface_normal(s));
 }
+float variance_at(ivec2 q) { return color_halves_variance(color_in.texels[texel_index(q)]); }
 #else
 Tap read_tap(ivec2 q) {
   const Surface s = surface_from(texelFetch(depth_normal, q, 0));
@@ -258,8 +253,7 @@ vec4 filter_pixel(ivec2 p) {
   result = clamp_fp16(result);
   const vec4 stored = round_to_half_clamped(result);  // what every fp16 output below holds (common/color.glsl)
 #ifdef PACKED_OUT
-  // The variance: store_variance_pair, once every invocation of the group has its own.
-  color_out.words[color_word_index(p, image_size())] = pack_rgb9e5(result.rgb);
+  color_out.texels[texel_index(p)] = pack_color_halves(result);
 #ifdef FIRST_PACKED
   surface.texels[texel_index(p)] = pack_filter_surface(center.z, dz, center.n);
 #endif
@@ -300,21 +294,6 @@ vec4 filter_pixel(ivec2 p) {
 #include "common/local_mean.glsl"
 #endif
 
-#ifdef PACKED_OUT
-// Two pixels' variances share a word (common/filter_texel.glsl): each invocation leaves its own in
-// shared memory, and the even pixel's writes the word. A group's width is even, so a pair never
-// spans two groups. Every invocation of the group calls it (a barrier).
-shared float pair_variance[kGroupX * kGroupY];
-void store_variance_pair(ivec2 p, float variance) {
-  pair_variance[gl_LocalInvocationIndex] = variance;
-  barrier();
-  if ((gl_LocalInvocationID.x & 1u) == 0u && inside(p, params.width, params.height)) {
-    const vec2 pair = vec2(variance, pair_variance[gl_LocalInvocationIndex + 1u]);
-    color_out.words[variance_word_index(p, image_size())] = packHalf2x16(pair);  // halves already
-  }
-}
-#endif
-
 // No return in main: one puts the barrier inside the loop construct that inlining makes of it
 // (suspected of stalling NVIDIA's OpenGL SPIR-V path: docs/performance.md).
 void main() {
@@ -323,15 +302,10 @@ void main() {
   barrier();
 #endif
   ivec2 p = invocation_pixel();
-  const bool in_image = inside(p, params.width, params.height);
-  const vec4 stored = in_image ? filter_pixel(p) : vec4(0.0);
-#ifdef PACKED_OUT
-  store_variance_pair(p, stored.a);
-#endif
 #ifdef LOCAL_MEAN_SUMS
   LOCAL_MEAN_SUM_TYPE terms = LOCAL_MEAN_SUM_TYPE(0.0);
-  if (in_image) {
-    const float l = luminance(stored.rgb);
+  if (inside(p, params.width, params.height)) {
+    const float l = luminance(filter_pixel(p).rgb);
 #ifdef FIRST_PACKED
     const float lt = luminance(texelFetch(integrated, p, 0).rgb);
     terms = vec4(lt, l, lt * lt, 1.0);
@@ -350,5 +324,7 @@ void main() {
     imageStore(block_sums, q, sum);
 #endif
   }
+#else
+  if (inside(p, params.width, params.height)) filter_pixel(p);
 #endif
 }

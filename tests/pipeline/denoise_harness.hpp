@@ -235,31 +235,25 @@ inline ImageD rgb9e5_values(const ImageD& words) {
     }
   return out;
 }
-// Read-back buffers of the packed colour (as words: width = the buffer's words, height 1, one
-// channel) and surface texels (2 words a pixel) as the reference's inputs: colour (RGB9E5, exactly)
-// and variance (the half, exactly), and depth_normal with the packed depth, normal (octahedral
-// again, in double) and depth gradient (dz / z's 8-bit code times the depth, in float as the GPU).
+// Read-back buffers of packed colour and surface texels (2 words a pixel each) as the reference's
+// inputs: colour and variance (the halves, exactly), and depth_normal with the packed depth, normal
+// (octahedral again, in double) and depth gradient (dz / z's 8-bit code times the depth, in float
+// as the GPU).
 struct FilterTexels {
   ImageD color, depth_normal;
 };
-inline FilterTexels unpack_filter_texels(const ImageD& color_words, const ImageD& packed_surface) {
-  const int w = packed_surface.width, h = packed_surface.height;
-  REQUIRE(color_words.width == w * h + h * ((w + 1) / 2));
+inline FilterTexels unpack_filter_texels(const ImageD& packed_color, const ImageD& packed_surface) {
+  const int w = packed_color.width, h = packed_color.height;
   FilterTexels out{ImageD(w, h, 4), ImageD(w, h, 4)};
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      const auto color_word = [&](int i) { return static_cast<std::uint32_t>(color_words.at(i, 0, 0)); };
+      const auto color_word = [&](int c) { return static_cast<std::uint32_t>(packed_color.at(x, y, c)); };
       const auto surface_word = [&](int c) { return static_cast<std::uint32_t>(packed_surface.at(x, y, c)); };
       const auto halves = [](std::uint32_t u) {
         return std::array<double, 2>{half_to_float(static_cast<std::uint16_t>(u & 0xffffu)),
                                      half_to_float(static_cast<std::uint16_t>(u >> 16))};
       };
-      const std::uint32_t rgb = color_word(y * w + x);
-      const double quantum = rgb9e5_quantum(rgb);
-      const double variance = halves(color_word(w * h + y * ((w + 1) / 2) + x / 2))[x % 2];
-      const auto channel = [&](int c) { return ((rgb >> (9 * c)) & 511u) * quantum; };
-      const std::array<double, 2> rg{channel(0), channel(1)}, ba{channel(2), variance};
-      const auto nxy = halves(surface_word(1));
+      const auto rg = halves(color_word(0)), ba = halves(color_word(1)), nxy = halves(surface_word(1));
       const bool z_negative = (surface_word(0) & 0x80000000u) != 0;
       const float z = std::abs(std::bit_cast<float>(surface_word(0) & 0xffffff00u));
       const std::uint32_t code = surface_word(0) & 0xffu;

@@ -47,13 +47,6 @@ const hal::ShaderInfo& atrous_shader(bool packed_in, bool packed_out, bool histo
 
 }  // namespace
 
-std::uint64_t packed_color_bytes(std::uint32_t width, std::uint32_t height) {
-  return std::uint64_t{4} * height * (std::uint64_t{width} + (std::uint64_t{width} + 1) / 2);
-}
-std::uint64_t packed_surface_bytes(std::uint32_t width, std::uint32_t height) {
-  return std::uint64_t{8} * width * height;
-}
-
 graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
                               int iteration, const DenoiseSettings& s) {
   const auto& decl = graph.resource(r.depth_normal);
@@ -103,10 +96,8 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
   if (r.estimate) covering.insert(covering.end(), {r.estimate->moments, r.estimate->albedo});
   for (const graph::ResourceId id : covering) {
     const auto& other = graph.resource(id);
-    const std::uint64_t packed_bytes = r.surface && id == *r.surface ? packed_surface_bytes(decl.width, decl.height)
-                                                                     : packed_color_bytes(decl.width, decl.height);
     const bool covers = other.kind == hal::ResourceKind::Buffer
-                            ? other.size >= packed_bytes
+                            ? other.size >= std::uint64_t{8} * decl.width * decl.height
                             : other.width == decl.width && other.height == decl.height;
     if (!covers)
       throw std::invalid_argument("add_atrous: '" + other.name + "' does not match depth_normal's " +

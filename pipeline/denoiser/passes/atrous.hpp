@@ -2,7 +2,6 @@
 // edge-avoiding a-trous wavelet filter, step 2^iteration, optionally also writing the colour history.
 #pragma once
 
-#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -20,8 +19,8 @@ struct VarianceEstimateInputs {
 
 struct AtrousResources {
   // color_in and color_out: RGBA16F images (rgb, variance) or storage buffers of packed colour
-  // (packed_color_bytes: RGB9E5 and the variance's half, in rows; shaders/common/filter_texel.glsl), which the
-  // iterations between a chain's first and last pass on, with the packed surface texels in `surface`. A buffer out from
+  // texels (8 bytes a pixel, in rows; shaders/common/filter_texel.glsl), which the iterations between
+  // a chain's first and last pass on, with the packed surface texels in `surface`. A buffer out from
   // an image in is the first iteration only (it reads a shared-memory tile that needs step 1): it
   // writes `surface`, and it estimates the variance itself: its color_in is the temporal pass's
   // output (rgb, temporal variance) and it also reads `estimate` (the variance pass's other inputs).
@@ -32,7 +31,7 @@ struct AtrousResources {
   graph::ResourceId color_out = 0;
   std::optional<graph::ResourceId> color_history;  // also written (persistent RGBA16F) at the history tap
   std::string prefix;                              // of the pass name: "specular." for the second signal
-  // Packed surface texels (packed_surface_bytes: depth, its gradient, normal): written by the first packed
+  // Packed surface texels (8 bytes a pixel: depth, its gradient, normal): written by the first packed
   // iteration, read by every packed-in one instead of depth_normal.
   std::optional<graph::ResourceId> surface;
   // Read by the first packed iteration's variance estimate: the moments, RGBA16F (E[l], sqrt(Var[l]), n),
@@ -68,18 +67,12 @@ struct AtrousResources {
 // Adds "<prefix>atrous.<iteration + 1>" with step 2^iteration and the settings' kernel and sigmas.
 // The dispatch covers depth_normal's size. Throws std::invalid_argument for a buffer out from an
 // image in at an iteration other than 0, for colour images of another size or buffers smaller
-// than the sizes below, for a packed iteration without `surface`, for the first packed iteration
+// than 8 bytes a pixel, for a packed iteration without `surface`, for the first packed iteration
 // without moments (or moments given to another), for `composite` on another iteration or with a
 // specular signal, for local_mean_sums anywhere but the first packed iteration (without
 // temporal_sums) or a packed-in last one without the history tap (with them), for an R32Uint
 // color_out anywhere but such a last one, and for corrects_history anywhere but a packed middle
 // iteration with color_history.
-// The packed buffers' sizes for a width x height image (shaders/common/filter_texel.glsl): the
-// colour's (a word a pixel, then the variances, two halves a word and ceil(width / 2) words a row)
-// and the surface's (8 bytes a pixel).
-std::uint64_t packed_color_bytes(std::uint32_t width, std::uint32_t height);
-std::uint64_t packed_surface_bytes(std::uint32_t width, std::uint32_t height);
-
 graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
                               int iteration, const DenoiseSettings& settings);
 

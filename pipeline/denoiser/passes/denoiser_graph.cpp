@@ -76,17 +76,17 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   bool history_correction_pending = false;
   ResourceId history_box_means = 0;
   for (int i = 0; i < s.atrous_iterations; ++i) {
-    // Packed filter texels between the 5x5 kernel's iterations: three loads a tap, no octahedral
-    // decode (denoiser/passes/atrous.hpp). The 3x3 box's 8 taps gain less than the wider texel costs (measured:
+    // Packed filter texels between the 5x5 kernel's iterations: two loads a tap, no decode
+    // (denoiser/passes/atrous.hpp). The 3x3 box's 8 taps gain less than the wider texel costs (measured:
     // docs/performance.md). Images too where the buffer would exceed the device's largest storage binding (Vulkan,
     // OpenGL ES and WebGPU guarantee 2^27 bytes: 4K fits, 8K does not).
     const std::string name = prefix + "atrous." + std::to_string(i + 1);
-    const bool packed = i + 1 < s.atrous_iterations && s.kernel == AtrousKernel::B3Spline &&
-                        packed_surface_bytes(w, h) <= max_storage_binding;
-    const ResourceId next =
-        packed ? graph.add_buffer(name, packed_color_bytes(w, h)) : graph.add_image(name, w, h, F::RGBA16F);
+    const std::uint64_t packed_bytes = std::uint64_t{w} * h * 8;
+    const bool packed =
+        i + 1 < s.atrous_iterations && s.kernel == AtrousKernel::B3Spline && packed_bytes <= max_storage_binding;
+    const ResourceId next = packed ? graph.add_buffer(name, packed_bytes) : graph.add_image(name, w, h, F::RGBA16F);
     const bool first_packed = packed && !surface;
-    if (first_packed) surface = graph.add_buffer(prefix + "filter_surface", packed_surface_bytes(w, h));
+    if (first_packed) surface = graph.add_buffer(prefix + "filter_surface", packed_bytes);
     // With the local-mean correction the tapped history is corrected too (after this iteration):
     // uncorrected, the filter's energy loss would feed back through the history into the temporal
     // result that the displayed colour is corrected toward.
