@@ -3,6 +3,7 @@
 // samples) through the public API (include/asvgf/denoiser.hpp), and writes every frame as EXR and
 // PNG; with --reference also metrics.csv. `asvgf render --aovs` writes exactly these buffers.
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +17,7 @@
 #include "frame_files.hpp"
 #include "frame_sequence.hpp"
 #include "input_conventions.hpp"
+#include "io/half_float.hpp"
 #include "io/image_io.hpp"
 #include "motion_check.hpp"
 #include "noise_check.hpp"
@@ -228,7 +230,11 @@ int run_denoise(DenoiseOptions& o) {
     device->upload_image(inputs[kMotion].image, std::as_bytes(std::span(zeros)));
   }
   const hal::ImageHandle gradient_image = gradient.empty() ? hal::ImageHandle{} : create("gradient", gw, gh, F32);
-  const hal::ImageHandle radiance = create("radiance", w, h, F32);
+  // Half floats, as asvgf render writes these methods' radiance: the histories are half floats, the
+  // input is clamped to 65504, and the output rounds to the nearest half (8 bytes a pixel less).
+  const hal::Format radiance_format = hal::Format::RGBA16F;
+  const hal::ImageHandle radiance = create("radiance", w, h, radiance_format);
+  std::vector<std::uint16_t> hdr_halves(std::size_t(w) * h * 4);
   const hal::ImageHandle display = create("display", w, h, hal::Format::RGBA8Unorm);
 
   const std::filesystem::path dir(o.out);
@@ -326,15 +332,17 @@ int run_denoise(DenoiseOptions& o) {
     }
     const auto uploaded = hal::State::CopyDst;
     const auto after = i == 0 ? hal::State::Undefined : hal::State::CopySrc;
-    denoiser.denoise(
-        {{inputs[0].image, F32, uploaded},
-         {inputs[1].image, F32, uploaded},
-         {inputs[2].image, F32, uploaded},
-         {inputs[3].image, F32, uploaded},
-         {inputs[kMotion].image, F32, still && i > 0 ? hal::State::ShaderRead : uploaded},
-         samples},
-        {{radiance, F32, after}, DenoiserImage{display, hal::Format::RGBA8Unorm, after}, hal::State::CopySrc});
-    device->read_image(radiance, std::as_writable_bytes(std::span(hdr)));
+    denoiser.denoise({{inputs[0].image, F32, uploaded},
+                      {inputs[1].image, F32, uploaded},
+                      {inputs[2].image, F32, uploaded},
+                      {inputs[3].image, F32, uploaded},
+                      {inputs[kMotion].image, F32, still && i > 0 ? hal::State::ShaderRead : uploaded},
+                      samples},
+                     {{radiance, radiance_format, after},
+                      DenoiserImage{display, hal::Format::RGBA8Unorm, after},
+                      hal::State::CopySrc});
+    device->read_image(radiance, std::as_writable_bytes(std::span(hdr_halves)));
+    std::transform(hdr_halves.begin(), hdr_halves.end(), hdr.begin(), io::half_to_float);
     device->read_image(display, std::as_writable_bytes(std::span(ldr)));
     render::write_exr(dir / frame_file("frame", f, "exr"), w, h, hdr);
     render::write_png(dir / frame_file("frame", f, "png"), w, h, ldr);

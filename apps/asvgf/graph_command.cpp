@@ -38,9 +38,11 @@ int run_graph(GraphOptions& o) {
   const scene::Scene scene = load_scene(o.scene);
   render::SceneGpu scene_gpu(device, scene, device.capabilities().ray_query);
   const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
+  const hal::Format hdr_format = frame::hdr_format(settings.method);
   frame::FrameTargets targets{
-      device.create_image({"hdr", settings.width, settings.height, hal::Format::RGBA32F, usage}),
+      device.create_image({"hdr", settings.width, settings.height, hdr_format, usage}),
       hal::State::Undefined,
+      hdr_format,
       device.create_image({"display", settings.width, settings.height, hal::Format::RGBA8Unorm, usage}),
       hal::State::Undefined,
       {},

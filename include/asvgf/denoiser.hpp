@@ -45,8 +45,10 @@
 //                       re-shade sets settings.gradient_source = GradientSource::Reprojected: the
 //                       denoiser then estimates the gradient from this frame's noisy luminance
 //                       against last frame's, reprojected, and ignores gradient_samples.
-//   radiance      out   RGBA32F storage image: the denoised radiance (re-modulated by albedo); never
-//                       NaN or Inf (non-finite pixels are written as 0 and counted).
+//   radiance      out   RGBA32F or RGBA16F storage image: the denoised radiance (re-modulated by
+//                       albedo); never NaN or Inf (non-finite pixels are written as 0 and counted).
+//                       RGBA16F: rounded to the nearest half, at most 65504 (8 bytes a pixel less
+//                       written, and the filter's histories are half floats already).
 //   display       out   optional RGBA8Unorm storage image: exposure, tone curve, sRGB encoding.
 //
 // Inputs are left in hal::State::ShaderRead, outputs in DenoiserOutputs::final_state.
@@ -92,7 +94,7 @@ struct DenoiserInputs {
 };
 
 struct DenoiserOutputs {
-  DenoiserImage radiance;                // RGBA32F
+  DenoiserImage radiance;                // RGBA32F or RGBA16F
   std::optional<DenoiserImage> display;  // RGBA8Unorm
   hal::State final_state = hal::State::ShaderRead;
 };

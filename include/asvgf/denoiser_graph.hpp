@@ -34,7 +34,7 @@ struct GraphDenoiserInputs {
   // scale (it compares radiance, the neighbours re-modulated by the pixel's albedo)
   graph::ResourceId albedo = 0;
   graph::ResourceId counters = 0;  // SanitizeCounters::import of this graph
-  graph::ResourceId hdr = 0;       // written by composite: RGBA32F linear radiance
+  graph::ResourceId hdr = 0;       // written by composite: RGBA32F or RGBA16F linear radiance
   graph::ResourceId display = 0;   // written by composite: RGBA8 tonemapped sRGB
   // A-SVGF with GradientSource::Reshaded: the gradient samples (asvgf/denoiser.hpp's table), one a
   // 3x3 stratum (ceil(w/3) x ceil(h/3), RGBA32F): x last frame's luminance forward-projected into

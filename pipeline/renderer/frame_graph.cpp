@@ -44,6 +44,10 @@ std::optional<DenoiseMethod> denoise_method(Method method) {
   return std::nullopt;
 }
 
+hal::Format hdr_format(Method method) {
+  return denoise_method(method) ? hal::Format::RGBA16F : hal::Format::RGBA32F;
+}
+
 std::optional<Method> method_from_string(std::string_view name) {
   for (Method m : kAllMethods)
     if (to_string(m) == name) return m;
@@ -67,7 +71,7 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const std::optional<DenoiseMethod> method = denoise_method(s.method);
 
   const passes::SceneInputs scene = passes::import_scene(g, scene_gpu, w, h);
-  const ResourceId hdr = g.import("hdr", targets.hdr, targets.hdr_state, w, h, F::RGBA32F);
+  const ResourceId hdr = g.import("hdr", targets.hdr, targets.hdr_state, w, h, targets.hdr_format);
   const ResourceId display = g.import("display", targets.display, targets.display_state, w, h, F::RGBA8Unorm);
   const ResourceId rays =
       g.import_buffer("ray_counter", targets.ray_counter, targets.ray_counter_state, kRayCounterSize);

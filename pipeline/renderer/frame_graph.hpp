@@ -26,6 +26,9 @@ namespace asvgf::frame {
 enum class Method { Raw, Ema, Svgf, Asvgf, Reference };
 // The denoiser's method behind `method`; nothing for raw and reference (no filter).
 std::optional<DenoiseMethod> denoise_method(Method method);
+// The radiance image's format: RGBA16F for the methods whose histories are half floats (ema, svgf,
+// asvgf: their radiance is within half float's range), RGBA32F for raw and reference, unclamped.
+hal::Format hdr_format(Method method);
 std::string_view to_string(Method method);
 std::optional<Method> method_from_string(std::string_view name);
 inline constexpr Method kAllMethods[] = {Method::Raw, Method::Ema, Method::Svgf, Method::Asvgf, Method::Reference};
@@ -76,9 +79,10 @@ struct AovTargets {
 // Images the frame writes its results to, owned by the caller and imported into the graph; the
 // frame leaves them in CopySrc for readback.
 struct FrameTargets {
-  hal::ImageHandle hdr;  // RGBA32F linear radiance
+  hal::ImageHandle hdr;  // linear radiance, in hdr_format
   hal::State hdr_state = hal::State::Undefined;
-  hal::ImageHandle display;  // RGBA8 tonemapped
+  hal::Format hdr_format = hal::Format::RGBA32F;  // RGBA32F or RGBA16F
+  hal::ImageHandle display;                       // RGBA8 tonemapped
   hal::State display_state = hal::State::Undefined;
   hal::ImageHandle debug;  // RGBA8, written when FrameSettings::debug_view is set
   hal::State debug_state = hal::State::Undefined;

@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <map>
 
 #include "hal/error.hpp"
+#include "io/half_float.hpp"
 
 namespace asvgf::render {
 namespace {
@@ -43,7 +45,8 @@ Renderer::Renderer(hal::Device& device, const scene::Scene& scene, const RenderS
   check_denoise_settings(settings);
   set_batches();
   const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
-  targets_.hdr = device.create_image({"hdr", settings.width, settings.height, hal::Format::RGBA32F, usage});
+  targets_.hdr_format = frame::hdr_format(settings.method);
+  targets_.hdr = device.create_image({"hdr", settings.width, settings.height, targets_.hdr_format, usage});
   targets_.display = device.create_image({"display", settings.width, settings.height, hal::Format::RGBA8Unorm, usage});
   targets_.ray_counter = device.create_buffer(
       {"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopySrc | hal::BufferUsage::CopyDst});
@@ -203,7 +206,13 @@ FrameImages Renderer::render(int frame) {
   if (!settings_.read_back) return out;
   out.hdr.resize(std::size_t(out.width) * out.height * 4);
   out.display.resize(std::size_t(out.width) * out.height * 4);
-  device_.read_image(targets_.hdr, std::as_writable_bytes(std::span(out.hdr)));
+  if (targets_.hdr_format == hal::Format::RGBA16F) {
+    std::vector<std::uint16_t> halves(out.hdr.size());
+    device_.read_image(targets_.hdr, std::as_writable_bytes(std::span(halves)));
+    std::transform(halves.begin(), halves.end(), out.hdr.begin(), io::half_to_float);
+  } else {
+    device_.read_image(targets_.hdr, std::as_writable_bytes(std::span(out.hdr)));
+  }
   device_.read_image(targets_.display, std::as_writable_bytes(std::span(out.display)));
   if (settings_.debug_view) {
     out.debug.resize(out.display.size());

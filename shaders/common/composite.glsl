@@ -1,8 +1,8 @@
 // common/composite.glsl: re-modulation and display of one pixel, for the composite pass
 // (denoise/composite.comp) and for the last a-trous iteration that does it itself
 // (denoise/atrous.comp, COMPOSITE). The including shader declares `params` (exposure, tonemap), the
-// textures `albedo` (and with SPLIT `specular`, `specular_albedo`), the images `hdr` (rgba32f) and
-// `display` (rgba8) and the SanitizeCounters buffer `counters`.
+// textures `albedo` (and with SPLIT `specular`, `specular_albedo`), the images `hdr` (rgba32f, or
+// rgba16f with HDR_HALF) and `display` (rgba8) and the SanitizeCounters buffer `counters`.
 // Re-modulates the filtered illumination with the albedo (the inverse of the path tracer's
 // demodulation radiance / max(albedo, 1e-3)), writes HDR radiance and a display image: exposure,
 // then the ACES filmic fit of Narkowicz (2015) or a plain clamp, then the sRGB transfer function.
@@ -29,7 +29,13 @@ void composite_pixel(ivec2 p, vec3 light) {
     radiance = vec3(0.0);
     atomicAdd(counters.zeroed_outputs, 1u);
   }
+#ifdef HDR_HALF
+  // Rounded to the nearest half, within its range: a store's own rounding may be toward zero
+  // (common/color.glsl), and a radiance past 65504 (an albedo above 1) would store as Inf.
+  imageStore(hdr, p, round_to_half(clamp_fp16(vec4(radiance, 1.0))));
+#else
   imageStore(hdr, p, vec4(radiance, 1.0));
+#endif
   vec3 x = max(radiance * params.exposure, vec3(0.0));
   vec3 mapped = params.tonemap == 1u ? aces_narkowicz(x) : clamp(x, 0.0, 1.0);
   imageStore(display, p, vec4(srgb_encode(mapped.r), srgb_encode(mapped.g), srgb_encode(mapped.b), 1.0));

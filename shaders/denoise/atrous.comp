@@ -17,7 +17,7 @@
 // RGBA16F image. HISTORY also writes the result to the colour history (the history tap). COMPOSITE
 // (a one-signal chain's last, packed-in iteration) composites the result (common/composite.glsl),
 // unrounded, instead of writing it to an RGBA16F image for the composite pass: 16 bytes a pixel and
-// a dispatch fewer. RGB9E5_OUT (a packed-in last iteration whose result only the composite reads)
+// a dispatch fewer (HDR_HALF: its radiance to an RGBA16F image, as composite.comp's). RGB9E5_OUT (a packed-in last iteration whose result only the composite reads)
 // writes the colour alone as RGB9E5 (common/filter_texel.glsl) to an R32UI image: 4 bytes a pixel
 // written and read instead of 8.
 // LOCAL_MEAN_SUMS (the local-mean correction, common/local_mean.glsl) also sums the result's
@@ -92,7 +92,11 @@ layout(set = 0, binding = 2) uniform utexture2D depth_normal;
 layout(set = 0, binding = 3, std430) writeonly buffer ColorOut { uvec2 texels[]; } color_out;
 #elif defined(COMPOSITE)
 layout(set = 0, binding = 7) uniform texture2D albedo;
+#ifdef HDR_HALF
+layout(set = 0, binding = 8, rgba16f) writeonly uniform image2D hdr;
+#else
 layout(set = 0, binding = 8, rgba32f) writeonly uniform image2D hdr;
+#endif
 layout(set = 0, binding = 9, rgba8) writeonly uniform image2D display;
 // SanitizeCounters (temporal.comp declares the same block): composite counts zeroed_outputs.
 layout(set = 0, binding = 10) buffer Counters {

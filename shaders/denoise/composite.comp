@@ -1,5 +1,6 @@
 // composite.comp: re-modulates the filtered illumination with the albedo and writes HDR radiance
-// (RGBA32F) and the tonemapped sRGB display image (RGBA8 unorm) (common/composite.glsl). The SPLIT
+// (RGBA32F, or RGBA16F with HDR_HALF) and the tonemapped sRGB display image (RGBA8 unorm)
+// (common/composite.glsl). The SPLIT
 // variant adds the filtered specular signal times its own albedo (pathtrace's SPLIT_SPECULAR). The
 // LOCAL_MEAN variant applies the displayed colour's local-mean correction first (local_mean.comp's
 // last pass, which then runs only where something reads its image), so that the corrected colour
@@ -30,7 +31,11 @@ layout(set = 0, binding = 1) uniform utexture2D illumination;
 layout(set = 0, binding = 1) uniform texture2D illumination;
 #endif
 layout(set = 0, binding = 2) uniform texture2D albedo;
+#ifdef HDR_HALF
+layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D hdr;
+#else
 layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D hdr;
+#endif
 layout(set = 0, binding = 4, rgba8) writeonly uniform image2D display;
 // SanitizeCounters (temporal.comp declares the same block): composite counts zeroed_outputs.
 #ifdef SPLIT

@@ -17,9 +17,13 @@ asvgf_add_shader(atrous SOURCE denoise/atrous.comp
                           middle_corrects_history=PACKED_IN,PACKED_OUT,CORRECTS_HISTORY
                           last=PACKED_IN last_history=PACKED_IN,HISTORY last_sums=PACKED_IN,LOCAL_MEAN_SUMS
                           last_sums_rgb9e5=PACKED_IN,LOCAL_MEAN_SUMS,RGB9E5_OUT
-                          last_composite=PACKED_IN,COMPOSITE last_history_composite=PACKED_IN,HISTORY,COMPOSITE)
+                          last_composite=PACKED_IN,COMPOSITE last_history_composite=PACKED_IN,HISTORY,COMPOSITE
+                          last_composite_half=PACKED_IN,COMPOSITE,HDR_HALF
+                          last_history_composite_half=PACKED_IN,HISTORY,COMPOSITE,HDR_HALF)
 asvgf_add_shader(composite SOURCE denoise/composite.comp VARIANTS one split=SPLIT local_mean=LOCAL_MEAN
-                 local_mean_rgb9e5=LOCAL_MEAN,ILLUMINATION_RGB9E5)
+                 local_mean_rgb9e5=LOCAL_MEAN,ILLUMINATION_RGB9E5
+                 one_half=HDR_HALF split_half=SPLIT,HDR_HALF local_mean_half=LOCAL_MEAN,HDR_HALF
+                 local_mean_rgb9e5_half=LOCAL_MEAN,ILLUMINATION_RGB9E5,HDR_HALF)
 asvgf_add_shader(local_mean SOURCE denoise/local_mean.comp VARIANTS blocks=BLOCKS blocks_filtered=BLOCKS,TEMPORAL_SUMS box=BOX apply)
 asvgf_add_shader(pack_surface SOURCE denoise/pack_surface.comp)
 asvgf_add_shader(gradient_reprojected SOURCE denoise/gradient_reprojected.comp)

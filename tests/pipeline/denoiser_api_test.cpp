@@ -13,6 +13,7 @@
 
 #include "asvgf/denoiser.hpp"
 #include "hal/error.hpp"
+#include "io/half_float.hpp"
 #include "vulkan/validated_device.hpp"
 
 namespace {
@@ -48,12 +49,15 @@ struct Rig {
   std::vector<hal::ImageHandle> images;  // illumination, albedo, normal, depth, motion, radiance
   asvgf::Denoiser denoiser;
   int frame = 0;
+  hal::Format radiance_format;
 
-  explicit Rig(asvgf::DenoiserConfig config) : denoiser(*device, config) {
+  explicit Rig(asvgf::DenoiserConfig config, hal::Format radiance = hal::Format::RGBA32F)
+      : denoiser(*device, config), radiance_format(radiance) {
     const auto usage =
         hal::ImageUsage::Sampled | hal::ImageUsage::Storage | hal::ImageUsage::CopySrc | hal::ImageUsage::CopyDst;
-    for (const char* name : {"illumination", "albedo", "normal", "depth", "motion", "radiance"})
+    for (const char* name : {"illumination", "albedo", "normal", "depth", "motion"})
       images.push_back(device->create_image({name, kW, kH, hal::Format::RGBA32F, usage}));
+    images.push_back(device->create_image({"radiance", kW, kH, radiance_format, usage}));
   }
   ~Rig() {
     for (auto h : images) device->destroy(h);
@@ -65,7 +69,9 @@ struct Rig {
     const auto up = hal::State::CopyDst;
     denoiser.denoise(
         {{images[0], F, up}, {images[1], F, up}, {images[2], F, up}, {images[3], F, up}, {images[4], F, up}},
-        {{images[5], F, frame == 0 ? hal::State::Undefined : hal::State::ShaderRead}, std::nullopt, final_state});
+        {{images[5], radiance_format, frame == 0 ? hal::State::Undefined : hal::State::ShaderRead},
+         std::nullopt,
+         final_state});
     ++frame;
   }
 };
@@ -147,8 +153,10 @@ TEST_CASE("denoiser API: images and settings it cannot use are refused naming th
   CHECK(record_error({good, {u8, hal::Format::RGBA8Unorm}, good, good, good}, {good}).find("denoiser input albedo") !=
         std::string::npos);
   CHECK(record_error({good, good, good, good, {}}, {good}).find("denoiser input motion") != std::string::npos);
-  CHECK(record_error({good, good, good, good, good}, {{f32, hal::Format::RGBA16F}}).find("denoiser output radiance") !=
-        std::string::npos);
+  const std::string wrong_format = record_error({good, good, good, good, good}, {{u8, hal::Format::RGBA8Unorm}});
+  MESSAGE(wrong_format);
+  CHECK(wrong_format.find("denoiser output radiance") != std::string::npos);
+  CHECK(wrong_format.find("rgba32f or rgba16f needed") != std::string::npos);
   CHECK(record_error({good, good, good, good, good}, {good}).find("is also an output") != std::string::npos);
   CHECK_THROWS_AS(denoiser.input_report(), hal::Error);  // validate is off
   device->destroy(f32);
@@ -242,4 +250,27 @@ TEST_CASE("denoiser API: motion in Cycles' and NRD's conventions gives the frame
   CHECK(denoise_frames(with(asvgf::MotionConvention::nrd()), 3, nrd) == want);
   // The conversion matters: our vectors read as Cycles' take the history from elsewhere.
   CHECK(denoise_frames(with(asvgf::MotionConvention::cycles()), 3, ours) != want);
+}
+
+TEST_CASE("denoiser API: an RGBA16F radiance holds the RGBA32F radiance rounded to the nearest half") {
+  for (const auto method : {asvgf::DenoiseMethod::Ema, asvgf::DenoiseMethod::Svgf}) {
+    CAPTURE(static_cast<int>(method));
+    Rig full({.width = kW, .height = kH, .method = method});
+    Rig half({.width = kW, .height = kH, .method = method}, hal::Format::RGBA16F);
+    for (int f = 0; f < 3; ++f) {
+      const hal::State after = f == 2 ? hal::State::CopySrc : hal::State::ShaderRead;
+      full.run(textured_frame(f), after);
+      half.run(textured_frame(f), after);
+    }
+    std::vector<float> want(std::size_t(kW) * kH * 4);
+    std::vector<std::uint16_t> got(want.size());
+    full.device->read_image(full.images[5], std::as_writable_bytes(std::span(want)));
+    half.device->read_image(half.images[5], std::as_writable_bytes(std::span(got)));
+    int differ = 0;
+    for (std::size_t i = 0; i < want.size(); ++i) differ += got[i] != asvgf::io::float_to_half(want[i]);
+    CHECK(differ == 0);
+    CHECK(std::any_of(want.begin(), want.end(), [](float v) { return v > 0.0f && v != 1.0f; }));
+    CHECK(full.device.messages.empty());
+    CHECK(half.device.messages.empty());
+  }
 }

@@ -48,7 +48,7 @@ struct Scene : CheckedRecord {
     if (!rays) rays = device.create_buffer({"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopyDst});
     std::array<std::byte, 16> zeros{};
     device.upload_buffer(rays, 0, zeros);
-    return {hdr, hdr_state, display, display_state, {}, State::Undefined, rays, State::CopyDst};
+    return {hdr, hdr_state, hal::Format::RGBA32F, display, display_state, {}, State::Undefined, rays, State::CopyDst};
   }
   void frame_done() { hdr_state = display_state = State::CopySrc; }
 };

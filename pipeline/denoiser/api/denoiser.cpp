@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <span>
 #include <string>
 
@@ -44,12 +45,14 @@ void check_input(const std::string& name, const DenoiserImage& image, std::uint3
                          std::to_string(channels) + " channel(s)");
 }
 
-void check_output(const std::string& name, const DenoiserImage& image, hal::Format want) {
+// `wanted`: the formats the shaders write, as the error names them ("RGBA32F or RGBA16F").
+void check_output(const std::string& name, const DenoiserImage& image, std::initializer_list<hal::Format> formats,
+                  const std::string& wanted) {
   if (!image.image) throw hal::Error(hal::ErrorKind::InvalidUsage, "denoiser output " + name, "no image given");
-  if (image.format != want)
+  if (std::find(formats.begin(), formats.end(), image.format) == formats.end())
     throw hal::Error(hal::ErrorKind::InvalidUsage, "denoiser output " + name,
-                     "format " + std::string(hal::format_name(image.format)) + " given, " +
-                         std::string(hal::format_name(want)) + " needed (a storage image the shader writes)");
+                     "format " + std::string(hal::format_name(image.format)) + " given, " + wanted +
+                         " needed (a storage image the shader writes)");
 }
 
 void check_config(const hal::Device& device, const DenoiserConfig& c) {
@@ -126,8 +129,8 @@ void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, cons
   check_input("motion", in.motion, 2);
   if (in.gradient_samples)
     check_input("gradient_samples", *in.gradient_samples, impl_->config.gradient_current_given ? 3 : 2);
-  check_output("radiance", out.radiance, F::RGBA32F);
-  if (out.display) check_output("display", *out.display, F::RGBA8Unorm);
+  check_output("radiance", out.radiance, {F::RGBA32F, F::RGBA16F}, "rgba32f or rgba16f");
+  if (out.display) check_output("display", *out.display, {F::RGBA8Unorm}, "rgba8");
   // The graph tracks each import's state on its own: one image given twice would be transitioned
   // from a state it is no longer in.
   for (const auto& [name, image] : {std::pair{"illumination", in.illumination},

@@ -13,8 +13,10 @@
 #include "shaders/atrous.history.hpp"
 #include "shaders/atrous.last.hpp"
 #include "shaders/atrous.last_composite.hpp"
+#include "shaders/atrous.last_composite_half.hpp"
 #include "shaders/atrous.last_history.hpp"
 #include "shaders/atrous.last_history_composite.hpp"
+#include "shaders/atrous.last_history_composite_half.hpp"
 #include "shaders/atrous.last_sums.hpp"
 #include "shaders/atrous.last_sums_rgb9e5.hpp"
 #include "shaders/atrous.middle.hpp"
@@ -31,11 +33,12 @@ using Uniforms = asvgf::shaders::atrous_plain_uniforms::Params;
 // The variant for the chain position: a storage buffer (the packed filter texels) in or out, the
 // history tap, composite folded in, the local mean's block sums or history correction.
 const hal::ShaderInfo& atrous_shader(bool packed_in, bool packed_out, bool history, bool composite, bool sums,
-                                     bool corrects_history, bool rgb9e5_out) {
+                                     bool corrects_history, bool rgb9e5_out, bool hdr_half) {
   namespace sh = asvgf::shaders;
   if (corrects_history) return sh::atrous_middle_corrects_history;
   if (rgb9e5_out) return sh::atrous_last_sums_rgb9e5;
   if (sums) return packed_in ? sh::atrous_last_sums : history ? sh::atrous_first_history_sums : sh::atrous_first_sums;
+  if (composite && hdr_half) return history ? sh::atrous_last_history_composite_half : sh::atrous_last_composite_half;
   if (composite) return history ? sh::atrous_last_history_composite : sh::atrous_last_composite;
   if (packed_in) {
     if (packed_out) return history ? sh::atrous_middle_history : sh::atrous_middle;
@@ -134,9 +137,9 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
     if (r.local_mean_sums->temporal_sums) bindings.push_back({"temporal_sums", *r.local_mean_sums->temporal_sums});
   }
   if (r.corrects_history) bindings.push_back({"box_means", r.corrects_history->box_means});
-  const hal::ShaderInfo& shader =
-      atrous_shader(packed_in, packed_out, r.color_history.has_value(), composite, r.local_mean_sums.has_value(),
-                    r.corrects_history.has_value(), rgb9e5_out);
+  const hal::ShaderInfo& shader = atrous_shader(
+      packed_in, packed_out, r.color_history.has_value(), composite, r.local_mean_sums.has_value(),
+      r.corrects_history.has_value(), rgb9e5_out, composite && hdr_half(graph, r.composite->hdr, "add_atrous"));
   const auto pipeline = pipelines.get<Uniforms>(shader);
   const std::string name =
       r.prefix + "atrous." + std::to_string(iteration + 1) + (composite ? "+composite" : "") + r.name_suffix;

@@ -4,9 +4,13 @@
 #include <stdexcept>
 
 #include "shaders/composite.local_mean.hpp"
+#include "shaders/composite.local_mean_half.hpp"
 #include "shaders/composite.local_mean_rgb9e5.hpp"
+#include "shaders/composite.local_mean_rgb9e5_half.hpp"
 #include "shaders/composite.one.hpp"
+#include "shaders/composite.one_half.hpp"
 #include "shaders/composite.split.hpp"
+#include "shaders/composite.split_half.hpp"
 
 namespace asvgf::passes {
 namespace {
@@ -15,6 +19,14 @@ namespace {
 using Uniforms = asvgf::shaders::composite_one_uniforms::Params;
 
 }  // namespace
+
+bool hdr_half(const graph::RenderGraph& graph, graph::ResourceId hdr, const std::string& caller) {
+  const auto& decl = graph.resource(hdr);
+  if (decl.kind == hal::ResourceKind::Image && decl.format == hal::Format::RGBA32F) return false;
+  if (decl.kind == hal::ResourceKind::Image && decl.format == hal::Format::RGBA16F) return true;
+  throw std::invalid_argument(caller + ": the radiance image '" + decl.name + "' is " +
+                              std::string(hal::format_name(decl.format)) + ", not RGBA32F or RGBA16F");
+}
 
 graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipelines, const CompositeResources& r,
                                  const DenoiseSettings& s) {
@@ -30,10 +42,13 @@ graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipel
   const LocalMeanBlocks blocks = r.local_mean ? r.local_mean->blocks : LocalMeanBlocks{};
   const Uniforms u{decl.width,    decl.height, s.exposure, static_cast<std::uint32_t>(s.tonemap),
                    blocks.radius, blocks.block};
+  namespace sh = asvgf::shaders;
+  const bool half = hdr_half(graph, r.hdr, "add_composite");
   const hal::ShaderInfo& shader =
-      split          ? asvgf::shaders::composite_split
-      : r.local_mean ? (rgb9e5 ? asvgf::shaders::composite_local_mean_rgb9e5 : asvgf::shaders::composite_local_mean)
-                     : asvgf::shaders::composite_one;
+      split          ? (half ? sh::composite_split_half : sh::composite_split)
+      : r.local_mean ? (rgb9e5 ? (half ? sh::composite_local_mean_rgb9e5_half : sh::composite_local_mean_rgb9e5)
+                               : (half ? sh::composite_local_mean_half : sh::composite_local_mean))
+                     : (half ? sh::composite_one_half : sh::composite_one);
   const auto pipeline = pipelines.get<Uniforms>(shader);
   std::vector<Binding> bindings{{"illumination", r.illumination},
                                 {"albedo", r.albedo},
