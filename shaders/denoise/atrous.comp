@@ -17,9 +17,9 @@
 // RGBA16F image. HISTORY also writes the result to the colour history (the history tap). COMPOSITE
 // (a one-signal chain's last, packed-in iteration) composites the result (common/composite.glsl),
 // unrounded, instead of writing it to an RGBA16F image for the composite pass: 16 bytes a pixel and
-// a dispatch fewer (HDR_HALF: its radiance to an RGBA16F image, as composite.comp's). RGB9E5_OUT (a packed-in last iteration whose result only the composite reads)
-// writes the colour alone as RGB9E5 (common/filter_texel.glsl) to an R32UI image: 4 bytes a pixel
-// written and read instead of 8.
+// a dispatch fewer (HDR_HALF: its radiance to an RGBA16F image, as composite.comp's). RGB9E5_OUT
+// (a packed-in last iteration whose result only the composite reads) writes the colour alone as
+// RGB9E5 (common/filter_texel.glsl) to an R32UI image: 4 bytes a pixel written and read instead of 8.
 // LOCAL_MEAN_SUMS (the local-mean correction, common/local_mean.glsl) also sums the result's
 // luminance over blocks of local_mean_block pixels into block_sums: the first packed iteration with
 // the history tap with the temporal result's terms (the history's correction), a packed-in last
