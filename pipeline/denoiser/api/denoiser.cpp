@@ -45,7 +45,7 @@ void check_input(const std::string& name, const DenoiserImage& image, std::uint3
                          std::to_string(channels) + " channel(s)");
 }
 
-// `wanted`: the formats the shaders write, as the error names them ("RGBA32F or RGBA16F").
+// `wanted`: the formats the shaders write, as the error names them ("rgba32f or rgba16f").
 void check_output(const std::string& name, const DenoiserImage& image, std::initializer_list<hal::Format> formats,
                   const std::string& wanted) {
   if (!image.image) throw hal::Error(hal::ErrorKind::InvalidUsage, "denoiser output " + name, "no image given");
