@@ -47,8 +47,9 @@
 //                       against last frame's, reprojected, and ignores gradient_samples.
 //   radiance      out   RGBA32F or RGBA16F storage image: the denoised radiance (re-modulated by
 //                       albedo); never NaN or Inf (non-finite pixels are written as 0 and counted).
-//                       RGBA16F: rounded to the nearest half, at most 65504 (8 bytes a pixel less
-//                       written, and the filter's histories are half floats already).
+//                       RGBA16F: rounded to the nearest half (below 2^-14 the last bit is the
+//                       store's), at most 65504: 8 bytes a pixel less written, and the filter's
+//                       histories are half floats already.
 //   display       out   optional RGBA8Unorm storage image: exposure, tone curve, sRGB encoding.
 //
 // Inputs are left in hal::State::ShaderRead, outputs in DenoiserOutputs::final_state.

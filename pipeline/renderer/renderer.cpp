@@ -122,6 +122,15 @@ void Renderer::set_settings(const RenderSettings& s) {
   check_denoise_settings(s);
   // Another method's histories hold another quantity, or nothing recent: start afresh.
   if (s.method != settings_.method) runtime_.reset_histories();
+  // raw and reference write unclamped RGBA32F radiance, the filtered methods RGBA16F.
+  if (frame::hdr_format(s.method) != targets_.hdr_format) {
+    device_.wait();
+    device_.destroy(targets_.hdr);
+    targets_.hdr_format = frame::hdr_format(s.method);
+    const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
+    targets_.hdr = device_.create_image({"hdr", s.width, s.height, targets_.hdr_format, usage});
+    targets_.hdr_state = hal::State::Undefined;
+  }
   if (s.debug_view && !targets_.debug) {
     const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
     targets_.debug = device_.create_image({"debug_view", s.width, s.height, hal::Format::RGBA8Unorm, usage});

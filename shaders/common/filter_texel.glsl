@@ -57,7 +57,7 @@ float color_halves_variance(uvec2 u) { return unpackHalf2x16(u.y).y; }
 // (atrous.comp's RGB9E5_OUT): the largest channel keeps 9 bits (a relative error of at most 2^-9
 // there, against fp16's 2^-11), the others the same absolute step. As the iterations' colour texel
 // (4 bytes and the variance's half apart, instead of 8) it moved 16 B a pixel less at 1080p but
-// cost the iterations 11% more time on an H100 (the decode and a third load a tap, in passes bound
+// cost the denoiser 11% more time on an H100, each middle iteration 30% (the decode and a third load a tap, in passes bound
 // by their instructions: docs/performance.md, "The colour in four bytes").
 uint pack_rgb9e5(vec3 rgb) {
   const vec3 c = clamp(rgb, vec3(0.0), vec3(65408.0));

@@ -1,10 +1,9 @@
 // composite.comp: re-modulates the filtered illumination with the albedo and writes HDR radiance
 // (RGBA32F, or RGBA16F with HDR_HALF) and the tonemapped sRGB display image (RGBA8 unorm)
 // (common/composite.glsl). The SPLIT variant adds the filtered specular signal times its own albedo
-// (pathtrace's SPLIT_SPECULAR). The
-// LOCAL_MEAN variant applies the displayed colour's local-mean correction first (local_mean.comp's
-// last pass, which then runs only where something reads its image), so that the corrected colour
-// is not written and read back. ILLUMINATION_RGB9E5 reads the illumination as RGB9E5 from an R32UI
+// (pathtrace's SPLIT_SPECULAR). The LOCAL_MEAN variant applies the displayed colour's local-mean
+// correction first (local_mean.comp's last pass, which then runs only where something reads its
+// image), so that the corrected colour is not written and read back. ILLUMINATION_RGB9E5 reads the illumination as RGB9E5 from an R32UI
 // image (a last a-trous iteration's RGB9E5_OUT: common/filter_texel.glsl).
 // Where a chain ends in a packed a-trous iteration and has one signal, that iteration composites
 // itself (atrous.comp, COMPOSITE) and this pass does not run.

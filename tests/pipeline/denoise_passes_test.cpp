@@ -41,14 +41,26 @@ constexpr int kSizes[][2] = {{17, 13}, {32, 32}, {9, 5}};
 auto fp16_tolerance(double magnitude) {
   return [magnitude](double want) { return fp16_ulp(want) + 1e-5 * magnitude; };
 }
-// fp16_tolerance for an RGB9E5 colour (common/filter_texel.glsl) against `want`: the colour channels
-// also round to RGB9E5, by at most half the stored value's quantum, which is at most `want`'s
-// quantum (its exponent at most one higher).
-auto rgb9e5_tolerance(const ImageD& want, double magnitude) {
-  return [&want, magnitude](int x, int y, int c, double w) {
-    const double rgb9e5 = c < 3 ? rgb9e5_quantum(want.at(x, y, 0), want.at(x, y, 1), want.at(x, y, 2)) : 0.0;
-    return rgb9e5 + fp16_ulp(w) + 1e-5 * magnitude;
+// fp16_tolerance for the colour of RGB9E5 `words` (common/filter_texel.glsl): the colour channels
+// also round to RGB9E5, by at most half the stored word's quantum (rgb9e5_canonical checks that the
+// exponent is the smallest that holds the largest channel, so that the quantum is not too coarse).
+auto rgb9e5_tolerance(const ImageD& words, double magnitude) {
+  return [&words, magnitude](int x, int y, int c, double w) {
+    const double half_quantum = 0.5 * rgb9e5_quantum(static_cast<std::uint32_t>(words.at(x, y, 0)));
+    return (c < 3 ? half_quantum : 0.0) + fp16_ulp(w) + 1e-5 * magnitude;
   };
+}
+// Words whose exponent is above 0 with every mantissa below 256: one exponent step coarser than the
+// largest channel needs.
+int rgb9e5_not_canonical(const ImageD& words) {
+  int count = 0;
+  for (int y = 0; y < words.height; ++y)
+    for (int x = 0; x < words.width; ++x) {
+      const auto word = static_cast<std::uint32_t>(words.at(x, y, 0));
+      const std::uint32_t largest = std::max({word & 511u, (word >> 9) & 511u, (word >> 18) & 511u});
+      count += (word >> 27) > 0 && largest < 256;
+    }
+  return count;
 }
 auto fp32_tolerance(double magnitude) {
   return [magnitude](double) { return 1e-5 * magnitude; };
@@ -737,9 +749,24 @@ TEST_CASE(
          passes::CompositeResources{0, harness.input(g, "albedo", albedo, F::RGBA16F), hdr, display,
                                     counters.import(g)}},
         2, settings);
+    // The same compositing iteration with half-float radiance (HDR_HALF), without the history tap.
+    const auto hdr_half = g.add_image("hdr.half", uw, uh, F::RGBA16F);
+    passes::AtrousResources last_half{
+        middle,
+        dn_in,
+        0,
+        std::nullopt,
+        "",
+        surface,
+        std::nullopt,
+        passes::CompositeResources{0, harness.input(g, "albedo.half", albedo, F::RGBA16F), hdr_half,
+                                   g.add_image("display.half", uw, uh, F::RGBA8Unorm), counters.import(g)}};
+    last_half.name_suffix = ".half";
+    passes::add_atrous(g, pipelines, last_half, 2, settings);
     ImageD got_first, got_middle, got_surface, got_last, got_history_first, got_history, got_hdr, got_display,
-        got_history_last;
+        got_history_last, got_hdr_half;
     harness.readback(g, hdr, &got_hdr);
+    harness.readback(g, hdr_half, &got_hdr_half);
     harness.readback(g, display, &got_display);
     if (composite_tap) harness.readback(g, history_last, &got_history_last);
     harness.readback_buffer(g, first, w, h, 2, &got_first);
@@ -778,6 +805,10 @@ TEST_CASE(
         ref::composite(got_last, quantize(albedo, F::RGBA16F), settings.exposure, static_cast<int>(settings.tonemap));
     DENOISE_CHECK_CLOSE(compare(got_hdr, want.hdr, 3, [](double v) { return 2 * fp16_ulp(v) + 1e-5; }),
                         "last iteration's composite hdr");
+    // The half-float radiance: the float one rounded to the nearest half (below 2^-14 the last bit
+    // is the store's).
+    DENOISE_CHECK_CLOSE(compare(got_hdr_half, got_hdr, 3, [](double v) { return 0.5 * fp16_ulp(v) + 0x1p-24; }),
+                        "last iteration's composite hdr, half floats");
     DENOISE_CHECK_CLOSE(compare(got_display, want.display, 3, [](double) { return 1.0 / 255.0; }),
                         "last iteration's composite display");
     if (composite_tap)
@@ -1080,8 +1111,9 @@ TEST_CASE(
       CHECK(compare(got_d, want_d, 4, exact).worst_error == 0.0);
       // The RGB9E5 twin: the same sums (of its fp16-rounded result), the colour within its rounding.
       CHECK(compare(got_d_rgb9e5, want_d, 4, exact).worst_error == 0.0);
-      DENOISE_CHECK_CLOSE(compare(rgb9e5_values(got_last_words), got_last, 3, rgb9e5_tolerance(got_last, 0)),
+      DENOISE_CHECK_CLOSE(compare(rgb9e5_values(got_last_words), got_last, 3, rgb9e5_tolerance(got_last_words, 0)),
                           "last iteration's RGB9E5 colour");
+      CHECK(rgb9e5_not_canonical(got_last_words) == 0);
       CHECK(compare(got_history, want_history_image, 4, exact).worst_error == 0.0);
       CHECK(want_h.at(0, 0, 3) == double(std::min(block, h) * std::min(block, w)));  // a whole block's pixels
     }
@@ -1089,12 +1121,17 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "denoise passes: composite pass matches the CPU reference (clamp and ACES tone curves), zeroes and counts "
-    "non-finite radiance") {
+    "denoise passes: composite pass matches the CPU reference (clamp and ACES tone curves, RGBA32F and RGBA16F "
+    "radiance), zeroes and counts non-finite radiance") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   passes::SanitizeCounters counters(*device);
-  for (const auto tonemap : {asvgf::Tonemap::Clamp, asvgf::Tonemap::Aces}) {
+  for (const auto& [tonemap, hdr_format] : {std::pair{asvgf::Tonemap::Clamp, F::RGBA32F},
+                                            {asvgf::Tonemap::Aces, F::RGBA32F},
+                                            {asvgf::Tonemap::Clamp, F::RGBA16F},
+                                            {asvgf::Tonemap::Aces, F::RGBA16F}}) {
+    const bool half = hdr_format == F::RGBA16F;
+    CAPTURE(half);
     const int w = 17, h = 13;
     Random r(91);
     ImageD illumination = random_color(r, w, h, 0, 3, 0);
@@ -1107,7 +1144,7 @@ TEST_CASE(
     settings.exposure = 1.5f;
     GraphHarness harness(*device);
     RenderGraph g;
-    const auto hdr = g.add_image("hdr", w, h, F::RGBA32F);
+    const auto hdr = g.add_image("hdr", w, h, hdr_format);
     const auto display = g.add_image("display", w, h, F::RGBA8Unorm);
     passes::add_composite(g, pipelines,
                           {harness.input(g, "illumination", illumination, F::RGBA32F),
@@ -1119,13 +1156,15 @@ TEST_CASE(
     harness.run(g);
     const auto want = ref::composite(quantize(illumination, F::RGBA32F), quantize(albedo, F::RGBA16F),
                                      settings.exposure, static_cast<int>(tonemap));
-    DENOISE_CHECK_CLOSE(compare(got_hdr, want.hdr, 4, fp32_tolerance(3)), "composite hdr");
+    // RGBA16F: rounded to the nearest half (below 2^-14 the last bit is the store's: one ulp there).
+    const auto hdr_tolerance = [half](double v) { return (half ? fp16_ulp(v) : 0.0) + 1e-5 * 3; };
+    DENOISE_CHECK_CLOSE(compare(got_hdr, want.hdr, 4, hdr_tolerance), "composite hdr");
     DENOISE_CHECK_CLOSE(compare(got_display, want.display, 4, [](double) { return 1.0 / 255.0; }), "composite display");
     CHECK(got_hdr.at(4, 4, 1) == 0.0);
     CHECK(got_hdr.at(5, 2, 0) == 0.0);
   }
-  // Two non-finite pixels a frame, two frames; nothing else.
+  // Two non-finite pixels a frame, four frames; nothing else.
   const auto counts = counters.read();
-  CHECK(counts.zeroed_outputs == 4);
+  CHECK(counts.zeroed_outputs == 8);
   CHECK(counts.clamped_samples == 0);
 }

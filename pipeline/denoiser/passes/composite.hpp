@@ -1,5 +1,5 @@
 // denoiser/passes/composite.hpp: the `composite` pass (shaders/denoise/composite.comp): re-modulates the
-// albedo and writes HDR radiance (RGBA32F) and the tonemapped sRGB display image (RGBA8).
+// albedo and writes HDR radiance (RGBA32F or RGBA16F) and the tonemapped sRGB display image (RGBA8).
 #pragma once
 
 #include <optional>
