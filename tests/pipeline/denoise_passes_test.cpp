@@ -749,13 +749,15 @@ TEST_CASE(
          passes::CompositeResources{0, harness.input(g, "albedo", albedo, F::RGBA16F), hdr, display,
                                     counters.import(g)}},
         2, settings);
-    // The same compositing iteration with half-float radiance (HDR_HALF), without the history tap.
+    // The same compositing iteration with half-float radiance (HDR_HALF), with the history tap where
+    // the other has none (both variants over the sizes).
     const auto hdr_half = g.add_image("hdr.half", uw, uh, F::RGBA16F);
+    const auto history_half = g.add_image("color_history.half", uw, uh, F::RGBA16F, Lifetime::Persistent);
     passes::AtrousResources last_half{
         middle,
         dn_in,
         0,
-        std::nullopt,
+        composite_tap ? std::nullopt : std::optional(history_half),
         "",
         surface,
         std::nullopt,
@@ -966,7 +968,7 @@ TEST_CASE(
       const auto black = harness.input(g, "black", ImageD(w, h, 4), F::RGBA16F);
       const passes::LocalMeanImages second = passes::add_local_mean(
           g, pipelines, {black, filtered_id, shared, "local_mean.shared", gated, images.block_sums}, settings);
-      ImageD got, got_shared, got_hdr, got_hdr_rgb9e5, want_rgb9e5;
+      ImageD got, got_shared, got_hdr, got_hdr_rgb9e5, want_rgb9e5, got_hdr_half;
       if (gated) {
         const auto hdr = g.add_image("hdr", w, h, F::RGBA32F);
         const auto albedo_id = harness.input(g, "albedo", ImageD(w, h, 4, 1.0), F::RGBA16F);
@@ -975,6 +977,13 @@ TEST_CASE(
                                counters.import(g), std::nullopt, std::nullopt, second},
                               settings);
         harness.readback(g, hdr, &got_hdr);
+        // The same with half-float radiance (HDR_HALF): the corrected colour is a half already.
+        const auto hdr_half = g.add_image("hdr.half", w, h, F::RGBA16F);
+        passes::add_composite(g, pipelines,
+                              {filtered_id, albedo_id, hdr_half, g.add_image("display.half", w, h, F::RGBA8Unorm),
+                               counters.import(g), std::nullopt, std::nullopt, second},
+                              settings);
+        harness.readback(g, hdr_half, &got_hdr_half);
         // The same correction of the filtered colour read as RGB9E5 (a last a-trous iteration's
         // RGB9E5_OUT), with the box means of the fp16 colour's sums: the correction pass over the
         // values the words hold, with those sums.
@@ -1006,6 +1015,7 @@ TEST_CASE(
       const auto exact = [](double) { return 1.0; };
       CHECK(compare(got_shared, got, 4, exact).worst_error == 0.0);
       if (gated) CHECK(compare(got_hdr, got, 3, exact).worst_error == 0.0);
+      if (gated) CHECK(compare(got_hdr_half, got, 3, exact).worst_error == 0.0);
       if (gated) CHECK(compare(got_hdr_rgb9e5, want_rgb9e5, 3, exact).worst_error == 0.0);
     }
   }
