@@ -23,6 +23,17 @@ std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t h = 0xcbf2
   return h;
 }
 
+// Frames 0..4 (3..4 move the box, so A-SVGF's gradient passes run): every HDR float and display byte.
+std::uint64_t frames_hash(render::Renderer& r) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (int f = 0; f < 5; ++f) {
+    const auto img = r.render(f);
+    h = fnv1a(img.hdr.data(), img.hdr.size() * sizeof(float), h);
+    h = fnv1a(img.display.data(), img.display.size(), h);
+  }
+  return h;
+}
+
 struct Expected {
   frame::Method method;
   const char* name;
@@ -75,13 +86,7 @@ TEST_CASE("frames of every method on boxes-move are bit-identical to the recorde
       s.spp = e.method == frame::Method::Reference ? 2 : 1;
       s.ray_query = ray_query;
       render::Renderer r(*device, scene, s);
-      std::uint64_t h = 0xcbf29ce484222325ull;
-      // Frames 3..4 move the box, so A-SVGF's gradient passes run.
-      for (int f = 0; f < 5; ++f) {
-        const auto img = r.render(f);
-        h = fnv1a(img.hdr.data(), img.hdr.size() * sizeof(float), h);
-        h = fnv1a(img.display.data(), img.display.size(), h);
-      }
+      const std::uint64_t h = frames_hash(r);
       char text[32];
       std::snprintf(text, sizeof text, "0x%016" PRIx64 "ull", h);
       MESSAGE(std::string(e.name) << ": " << text);
@@ -107,12 +112,6 @@ TEST_CASE("a renderer switched between methods gives each method's recorded fram
     s.method = e.method;
     s.spp = e.method == frame::Method::Reference ? 2 : 1;
     r.set_settings(s);
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    for (int f = 0; f < 5; ++f) {
-      const auto img = r.render(f);
-      h = fnv1a(img.hdr.data(), img.hdr.size() * sizeof(float), h);
-      h = fnv1a(img.display.data(), img.display.size(), h);
-    }
-    CHECK(h == e.hash);
+    CHECK(frames_hash(r) == e.hash);
   }
 }
