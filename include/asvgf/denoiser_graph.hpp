@@ -63,12 +63,14 @@ struct GraphDenoiserInputs {
 
 struct GraphDenoiserOutputs {
   graph::ResourceId filtered = 0;  // what composite modulated: the last a-trous output, the EMA, or the input
-  std::optional<graph::ResourceId> gradient;       // reconstructed (delta^, Delta^), when the gradient passes run
-  std::optional<graph::ResourceId> moments;        // persistent RGBA16F (E[l], sqrt(Var[l]), n)
-  std::optional<graph::ResourceId> integrated;     // the temporal pass's output (rgb, temporal variance)
-  std::optional<graph::ResourceId> variance;       // the variance pass's output, else `integrated`
-  std::optional<graph::ResourceId> color_history;  // persistent colour history
-  std::optional<graph::ResourceId> specular;       // the specular chain's `filtered`, with two signals
+  std::optional<graph::ResourceId> gradient;  // reconstructed (delta^, Delta^), when the gradient passes run
+  std::optional<graph::ResourceId> moments;   // persistent RGBA16F (E[l], sqrt(Var[l]), n)
+  // The temporal pass's output and the persistent colour history: with a-trous iterations R32Uint,
+  // RGB9E5 words (rgb: Vulkan's E5B9G9R9 layout); the EMA's RGBA16F (rgb, temporal variance).
+  std::optional<graph::ResourceId> integrated;
+  std::optional<graph::ResourceId> variance;  // the variance pass's output (RGBA16F), else `integrated`
+  std::optional<graph::ResourceId> color_history;
+  std::optional<graph::ResourceId> specular;  // the specular chain's `filtered`, with two signals
 };
 
 // `method` nothing: no filter, composite shows the illumination as it is (raw samples, an

@@ -1,4 +1,5 @@
-// common/color.glsl: luminance, sample sanitising and fp16 storage limits shared by the denoiser.
+// common/color.glsl: luminance, sample sanitising, fp16 storage limits and the RGB9E5 colour word
+// shared by the denoiser.
 // The CPU twin is pipeline/cpu_oracle/denoise_math.hpp; keep the two in step.
 #ifndef ASVGF_COMMON_COLOR_GLSL
 #define ASVGF_COMMON_COLOR_GLSL
@@ -45,5 +46,30 @@ vec4 round_to_half_clamped(vec4 v) {
 vec2 round_to_half(vec2 v) { return vec2(round_to_half(v.x), round_to_half(v.y)); }
 vec3 round_to_half(vec3 v) { return vec3(round_to_half(v.x), round_to_half(v.y), round_to_half(v.z)); }
 vec4 round_to_half(vec4 v) { return vec4(round_to_half(v.xy), round_to_half(v.zw)); }
+
+// RGB9E5 (Vulkan's E5B9G9R9_UFLOAT_PACK32: r, g, b in bits 0-8, 9-17, 18-26 as 9-bit mantissas
+// without an implicit one, a shared exponent with bias 15 in 27-31), rounded to nearest; negative
+// values 0, at most 65408 ((511 / 512) 2^16). The largest channel keeps 9 bits (a relative error of
+// at most 2^-9 there, against fp16's 2^-11), the others the same absolute step. Colour that is
+// written once and read at few places goes this way, 4 bytes a pixel instead of RGBA16F's 8: a
+// spatial chain's temporal result and colour history (temporal.comp's COLOR_RGB9E5), and the last
+// iteration's colour for the composite (atrous.comp's RGB9E5_OUT). As the iterations' colour texel
+// (read at 13 taps a pixel, with the variance's half apart) it moved 16 B a pixel less at 1080p but
+// cost the denoiser 11% more time on an H100, each middle iteration 30% (the decode and a third
+// load a tap, in passes bound by their instructions: docs/performance.md, "The colour in four bytes").
+// CPU twin: tests/pipeline/denoise_harness.hpp's pack_rgb9e5.
+uint pack_rgb9e5(vec3 rgb) {
+  const vec3 c = clamp(rgb, vec3(0.0), vec3(65408.0));
+  const float m = max(c.r, max(c.g, c.b));
+  // max(-16, floor(log2 m)) + 16, from the float's exponent field (0 for m = 0: -127)
+  int e = max(int(floatBitsToUint(m) >> 23) - 127, -16) + 16;
+  // 2^(24 - e): the mantissas' scale; rounding the largest up to 512 takes the next exponent
+  if (floor(m * uintBitsToFloat(uint(151 - e) << 23) + 0.5) >= 512.0) ++e;
+  const uvec3 q = uvec3(floor(c * uintBitsToFloat(uint(151 - e) << 23) + 0.5));
+  return q.r | (q.g << 9) | (q.b << 18) | (uint(e) << 27);
+}
+vec3 unpack_rgb9e5(uint u) {
+  return vec3(uvec3(u, u >> 9, u >> 18) & 511u) * uintBitsToFloat(((u >> 27) + 103u) << 23);
+}
 
 #endif

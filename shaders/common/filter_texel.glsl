@@ -51,28 +51,6 @@ float unpack_relative_gradient(uint code) {
 
 float color_halves_variance(uvec2 u) { return unpackHalf2x16(u.y).y; }
 
-// RGB9E5 (Vulkan's E5B9G9R9_UFLOAT_PACK32: r, g, b in bits 0-8, 9-17, 18-26 as 9-bit mantissas
-// without an implicit one, a shared exponent with bias 15 in 27-31), rounded to nearest; negative
-// values 0, at most 65408 ((511 / 512) 2^16). The last iteration's colour for the composite
-// (atrous.comp's RGB9E5_OUT): the largest channel keeps 9 bits (a relative error of at most 2^-9
-// there, against fp16's 2^-11), the others the same absolute step. As the iterations' colour texel
-// (4 bytes and the variance's half apart, instead of 8) it moved 16 B a pixel less at 1080p but
-// cost the denoiser 11% more time on an H100, each middle iteration 30% (the decode and a third load a tap, in passes bound
-// by their instructions: docs/performance.md, "The colour in four bytes").
-uint pack_rgb9e5(vec3 rgb) {
-  const vec3 c = clamp(rgb, vec3(0.0), vec3(65408.0));
-  const float m = max(c.r, max(c.g, c.b));
-  // max(-16, floor(log2 m)) + 16, from the float's exponent field (0 for m = 0: -127)
-  int e = max(int(floatBitsToUint(m) >> 23) - 127, -16) + 16;
-  // 2^(24 - e): the mantissas' scale; rounding the largest up to 512 takes the next exponent
-  if (floor(m * uintBitsToFloat(uint(151 - e) << 23) + 0.5) >= 512.0) ++e;
-  const uvec3 q = uvec3(floor(c * uintBitsToFloat(uint(151 - e) << 23) + 0.5));
-  return q.r | (q.g << 9) | (q.b << 18) | (uint(e) << 27);
-}
-vec3 unpack_rgb9e5(uint u) {
-  return vec3(uvec3(u, u >> 9, u >> 18) & 511u) * uintBitsToFloat(((u >> 27) + 103u) << 23);
-}
-
 // z > 0 as depth_normal holds it (its low 8 bits 0) with a unit normal n and the depth gradient
 // dz >= 0; z = 0 (no hit) packs as depth 0.
 uvec2 pack_filter_surface(float z, float dz, vec3 n) {

@@ -93,6 +93,9 @@ float local_mean_scale(ivec2 p, ivec2 size, int block, int radius, bool gated) {
 vec4 local_mean_corrected(vec4 filtered, float scale) {
   return round_to_half(clamp_fp16(vec4(filtered.rgb * scale, filtered.a)));
 }
+// The corrected colour history as RGB9E5 words (common/color.glsl), as the apply pass's
+// FILTERED_RGB9E5 variant and the a-trous iteration that corrects the history both store it.
+uint local_mean_corrected_rgb9e5(vec3 filtered, float scale) { return pack_rgb9e5(filtered * scale); }
 #endif
 
 #endif

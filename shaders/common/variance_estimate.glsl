@@ -2,7 +2,7 @@
 // pass's colour and moments, for the variance pass (denoise/variance.comp) and for the first a-trous
 // iteration that estimates it while loading its tile (denoise/atrous.comp, FUSED_VARIANCE). The
 // including shader declares `params` (width, height, sigma_z, sigma_n, sigma_l, min_history) and the
-// textures `integrated` (RGBA16F rgb, temporal variance), `moments` (E[l], sqrt(Var[l]), n),
+// textures `integrated` (R32UI: RGB9E5 words, common/color.glsl), `moments` (E[l], sqrt(Var[l]), n),
 // `depth_normal` and `albedo` (what the signal is re-modulated by). With at least min_history
 // frames of history: the temporal estimate Var[l]; with less, a 7x7 edge-aware spatial estimate of the moments (and of the colour), boosted
 // by min_history / n as in Falcor's SVGF, except that with one frame of history the moments are
@@ -15,9 +15,11 @@
 
 const int kVarianceRadius = 3;
 
+vec3 integrated_color(ivec2 q) { return unpack_rgb9e5(texelFetch(integrated, q, 0).x); }
+
 // Colour and variance of pixel p (inside the image) with surface `center`, clamped to fp16's range.
 vec4 estimate_color_variance(ivec2 p, Surface center) {
-  vec3 color = texelFetch(integrated, p, 0).rgb;
+  vec3 color = integrated_color(p);
   vec3 mn = texelFetch(moments, p, 0).xyz;
   Moments m = moments_from_stored(mn.xy);
   float n = mn.z;
@@ -44,7 +46,7 @@ vec4 estimate_color_variance(ivec2 p, Surface center) {
           vec3 other_m = texelFetch(moments, q, 0).xyz;
           if (!(other_m.z > 0.0)) continue;  // a neighbour without history is not part of the estimate
           mq = moments_from_stored(other_m.xy);
-          cq = texelFetch(integrated, q, 0).rgb;
+          cq = integrated_color(q);
           Surface other = surface_from(texelFetch(depth_normal, q, 0));
           float dist = float(abs(dx) + abs(dy));
           w_surface = weight_depth(center, other, dist, params.sigma_z) * weight_normal(center, other, params.sigma_n);

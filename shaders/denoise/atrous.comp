@@ -14,7 +14,8 @@
 // variance from the temporal pass's output, moments and the albedo (common/variance_estimate.glsl), so the
 // variance pass (48 bytes a pixel and a dispatch) does not run. Without PACKED_* (the box kernel,
 // one iteration, images too large for packed texels) the first iteration reads the variance pass's
-// RGBA16F image. HISTORY also writes the result to the colour history (the history tap). COMPOSITE
+// RGBA16F image. HISTORY also writes the result to the colour history (the history tap), as a
+// spatial chain's history is kept: RGB9E5 words (common/color.glsl; temporal.comp's COLOR_RGB9E5). COMPOSITE
 // (a one-signal chain's last, packed-in iteration) composites the result (common/composite.glsl),
 // unrounded, instead of writing it to an RGBA16F image for the composite pass: 16 bytes a pixel and
 // a dispatch fewer (HDR_HALF: its radiance to an RGBA16F image, as composite.comp's). RGB9E5_OUT
@@ -80,7 +81,7 @@ layout(set = 0, binding = 0) uniform Params {
 layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec2 texels[]; } color_in;
 layout(set = 0, binding = 5, std430) readonly buffer SurfaceIn { uvec2 texels[]; } surface;
 #elif defined(FIRST_PACKED)
-layout(set = 0, binding = 1) uniform texture2D integrated;  // rgb colour, a temporal variance
+layout(set = 0, binding = 1) uniform utexture2D integrated;  // the temporal result's colour, RGB9E5 words
 layout(set = 0, binding = 6) uniform texture2D moments;     // E[l], sqrt(Var[l]), history length
 #else
 layout(set = 0, binding = 1) uniform texture2D color_in;  // rgb colour, a variance
@@ -112,10 +113,10 @@ layout(set = 0, binding = 3, r32ui) writeonly uniform uimage2D color_out;  // th
 layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D color_out;
 #endif
 #ifdef HISTORY
-layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_history;
+layout(set = 0, binding = 4, r32ui) writeonly uniform uimage2D color_history;  // RGB9E5 words
 #endif
 #ifdef CORRECTS_HISTORY
-layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_history;
+layout(set = 0, binding = 4, r32ui) writeonly uniform uimage2D color_history;  // RGB9E5 words
 layout(set = 0, binding = 13) uniform texture2D box_means;  // the history's correction's (local_mean.comp)
 #define LOCAL_MEAN_READS_BOX_MEANS
 #include "common/local_mean.glsl"
@@ -269,7 +270,7 @@ vec4 filter_pixel(ivec2 p) {
   imageStore(color_out, p, stored);
 #endif
 #ifdef HISTORY
-  imageStore(color_history, p, stored);
+  imageStore(color_history, p, uvec4(pack_rgb9e5(result.rgb), 0u, 0u, 0u));
 #endif
 #ifdef CORRECTS_HISTORY
   // The previous iteration's result, this one's centre texel, corrected toward the temporal result's
@@ -277,7 +278,7 @@ vec4 filter_pixel(ivec2 p) {
   // image that pass would read and write.
   const float scale =
       local_mean_scale(p, ivec2(params.width, params.height), params.local_mean_block, params.local_mean_radius, false);
-  imageStore(color_history, p, local_mean_corrected(c.color, scale));
+  imageStore(color_history, p, uvec4(local_mean_corrected_rgb9e5(c.color.rgb, scale), 0u, 0u, 0u));
 #endif
   return stored;
 }
@@ -311,7 +312,7 @@ void main() {
   if (inside(p, params.width, params.height)) {
     const float l = luminance(filter_pixel(p).rgb);
 #ifdef FIRST_PACKED
-    const float lt = luminance(texelFetch(integrated, p, 0).rgb);
+    const float lt = luminance(integrated_color(p));
     terms = vec4(lt, l, lt * lt, 1.0);
 #else
     terms = l;

@@ -24,7 +24,6 @@ layout(set = 0, binding = 0) uniform Params {
   int local_mean_block;   // LOCAL_MEAN: pixels a block's side
 } params;
 #ifdef ILLUMINATION_RGB9E5
-#include "common/filter_texel.glsl"
 layout(set = 0, binding = 1) uniform utexture2D illumination;
 #else
 layout(set = 0, binding = 1) uniform texture2D illumination;

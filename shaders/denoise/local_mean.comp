@@ -16,7 +16,9 @@
 // composite scales the displayed colour (composite.comp, LOCAL_MEAN): these passes run where they
 // cannot (denoiser/passes/denoiser_graph.cpp). Two k-wide separable passes over every pixel cost
 // 0.26 ms at 1080p and k 65; the block passes touch each pixel once (docs/quality.md, "The box over
-// blocks").
+// blocks"). The temporal result is a spatial chain's RGB9E5 words (temporal.comp's COLOR_RGB9E5);
+// FILTERED_RGB9E5 (the tapped history's correction) reads `filtered` and writes `corrected` as RGB9E5
+// words too, as the colour history is kept.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -38,9 +40,13 @@ layout(set = 0, binding = 0) uniform Params {
 #ifdef TEMPORAL_SUMS
 layout(set = 0, binding = 6) uniform texture2D temporal_sums;  // x, z, w: another correction's block sums
 #else
-layout(set = 0, binding = 1) uniform texture2D temporal;  // the temporal pass's result
+layout(set = 0, binding = 1) uniform utexture2D temporal;  // the temporal pass's result, RGB9E5 words
 #endif
+#ifdef FILTERED_RGB9E5
+layout(set = 0, binding = 2) uniform utexture2D filtered;  // the tapped history, RGB9E5 words
+#else
 layout(set = 0, binding = 2) uniform texture2D filtered;  // the last a-trous iteration's
+#endif
 // x: temporal, y: filtered, z: temporal squared (sums), w: pixels
 layout(set = 0, binding = 3, rgba32f) writeonly uniform image2D block_sums;
 #elif defined(BOX)
@@ -48,9 +54,14 @@ layout(set = 0, binding = 3) uniform texture2D block_sums;
 // x, y, z: the window's means of the three terms
 layout(set = 0, binding = 4, rgba32f) writeonly uniform image2D box_means;
 #else
+#ifdef FILTERED_RGB9E5
+layout(set = 0, binding = 2) uniform utexture2D filtered;
+layout(set = 0, binding = 5, r32ui) writeonly uniform uimage2D corrected;
+#else
 layout(set = 0, binding = 2) uniform texture2D filtered;
-layout(set = 0, binding = 4) uniform texture2D box_means;
 layout(set = 0, binding = 5, rgba16f) writeonly uniform image2D corrected;
+#endif
+layout(set = 0, binding = 4) uniform texture2D box_means;
 #define LOCAL_MEAN_READS_BOX_MEANS
 #endif
 #ifdef BLOCKS
@@ -60,6 +71,15 @@ layout(set = 0, binding = 5, rgba16f) writeonly uniform image2D corrected;
 #include "common/local_mean.glsl"
 
 ivec2 size() { return ivec2(params.width, params.height); }
+#ifndef BOX
+vec3 filtered_color(ivec2 p) {
+#ifdef FILTERED_RGB9E5
+  return unpack_rgb9e5(texelFetch(filtered, p, 0).x);
+#else
+  return texelFetch(filtered, p, 0).rgb;
+#endif
+}
+#endif
 ivec2 blocks() { return local_mean_blocks(size(), params.block); }
 
 #ifdef BLOCKS
@@ -70,10 +90,10 @@ void main() {
   vec4 t = vec4(0.0);
   if (inside(p, params.width, params.height)) {
 #ifdef TEMPORAL_SUMS
-    t.y = luminance(texelFetch(filtered, p, 0).rgb);
+    t.y = luminance(filtered_color(p));
 #else
-    const float lt = luminance(texelFetch(temporal, p, 0).rgb);
-    t = vec4(lt, luminance(texelFetch(filtered, p, 0).rgb), lt * lt, 1.0);
+    const float lt = luminance(unpack_rgb9e5(texelFetch(temporal, p, 0).x));
+    t = vec4(lt, luminance(filtered_color(p)), lt * lt, 1.0);
 #endif
   }
   vec4 sum = local_mean_block_sum(t, params.block);
@@ -132,7 +152,11 @@ void main() {
   const ivec2 p = invocation_pixel();
   if (inside(p, params.width, params.height)) {
     const float scale = local_mean_scale(p, size(), params.block, params.radius, params.gated != 0u);
+#ifdef FILTERED_RGB9E5
+    imageStore(corrected, p, uvec4(local_mean_corrected_rgb9e5(filtered_color(p), scale), 0u, 0u, 0u));
+#else
     imageStore(corrected, p, local_mean_corrected(texelFetch(filtered, p, 0), scale));
+#endif
   }
 }
 #endif

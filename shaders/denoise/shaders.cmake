@@ -6,8 +6,12 @@ asvgf_add_shader(gradient SOURCE denoise/gradient.comp VARIANTS in_illumination 
 # gradient from the samples (the first iteration, l_cur given).
 asvgf_add_shader(gradient_atrous SOURCE denoise/gradient_atrous.comp
                  VARIANTS plain first=GUIDE_OUT rest=GUIDE_IN samples=SAMPLES_IN samples_first=SAMPLES_IN,GUIDE_OUT)
+# temporal: the `rgb9e5` ones are a spatial chain's (its colour history and result as RGB9E5 words).
 asvgf_add_shader(temporal SOURCE denoise/temporal.comp
-                 VARIANTS constant adaptive=ADAPTIVE constant_virtual=VIRTUAL_MOTION adaptive_virtual=ADAPTIVE,VIRTUAL_MOTION)
+                 VARIANTS constant adaptive=ADAPTIVE constant_virtual=VIRTUAL_MOTION adaptive_virtual=ADAPTIVE,VIRTUAL_MOTION
+                          constant_rgb9e5=COLOR_RGB9E5 adaptive_rgb9e5=ADAPTIVE,COLOR_RGB9E5
+                          constant_virtual_rgb9e5=VIRTUAL_MOTION,COLOR_RGB9E5
+                          adaptive_virtual_rgb9e5=ADAPTIVE,VIRTUAL_MOTION,COLOR_RGB9E5)
 asvgf_add_shader(variance SOURCE denoise/variance.comp)
 asvgf_add_shader(atrous SOURCE denoise/atrous.comp
                  VARIANTS plain history=HISTORY
@@ -24,7 +28,9 @@ asvgf_add_shader(composite SOURCE denoise/composite.comp VARIANTS one split=SPLI
                  local_mean_rgb9e5=LOCAL_MEAN,ILLUMINATION_RGB9E5
                  one_half=HDR_HALF split_half=SPLIT,HDR_HALF local_mean_half=LOCAL_MEAN,HDR_HALF
                  local_mean_rgb9e5_half=LOCAL_MEAN,ILLUMINATION_RGB9E5,HDR_HALF)
-asvgf_add_shader(local_mean SOURCE denoise/local_mean.comp VARIANTS blocks=BLOCKS blocks_filtered=BLOCKS,TEMPORAL_SUMS box=BOX apply)
+asvgf_add_shader(local_mean SOURCE denoise/local_mean.comp
+                 VARIANTS blocks=BLOCKS blocks_rgb9e5=BLOCKS,FILTERED_RGB9E5 blocks_filtered=BLOCKS,TEMPORAL_SUMS box=BOX
+                          apply apply_rgb9e5=FILTERED_RGB9E5)
 asvgf_add_shader(pack_surface SOURCE denoise/pack_surface.comp)
 asvgf_add_shader(gradient_reprojected SOURCE denoise/gradient_reprojected.comp)
 asvgf_add_shader(validate_inputs SOURCE denoise/validate_inputs.comp)

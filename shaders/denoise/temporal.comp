@@ -9,6 +9,10 @@
 //   with the ADAPTIVE variant; constant alpha otherwise. Moments use their own alpha the same way.
 //   Short histories average uniformly: alpha_eff = max(alpha_i, 1/n); a gradient also shortens the
 //   history, n = n_prev (1 - lambda) + 1, capped at history_cap.
+// COLOR_RGB9E5 (a spatial chain's): the colour history read and the result written as RGB9E5 words
+// (common/color.glsl), 4 bytes a pixel each instead of RGBA16F's 8, without the temporal variance,
+// which the moments hold and the variance estimate reads from there. The EMA's result is its
+// displayed colour and stays RGBA16F.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -36,12 +40,20 @@ layout(set = 0, binding = 1) uniform texture2D illumination;
 layout(set = 0, binding = 2) uniform texture2D motion;
 layout(set = 0, binding = 3) uniform utexture2D depth_normal;
 layout(set = 0, binding = 4) uniform utexture2D prev_depth_normal;
+#ifdef COLOR_RGB9E5
+layout(set = 0, binding = 5) uniform utexture2D prev_color;
+#else
 layout(set = 0, binding = 5) uniform texture2D prev_color;
+#endif
 layout(set = 0, binding = 6) uniform texture2D prev_moments;
 #ifdef ADAPTIVE
 layout(set = 0, binding = 8) uniform texture2D gradient;
 #endif
-layout(set = 0, binding = 9, rgba16f) writeonly uniform image2D integrated;
+#ifdef COLOR_RGB9E5
+layout(set = 0, binding = 9, r32ui) writeonly uniform uimage2D integrated;  // rgb
+#else
+layout(set = 0, binding = 9, rgba16f) writeonly uniform image2D integrated;  // rgb, the temporal variance
+#endif
 // E[l], sqrt(Var[l]) and the history length n (common/denoise.glsl: moments_to_stored); four
 // channels because GLES 3.1 (ESSL target) can store neither rg16f nor r16f.
 layout(set = 0, binding = 10, rgba16f) writeonly uniform image2D moments;
@@ -99,7 +111,11 @@ History reproject(ivec2 p, Surface cur) {
         const bool consistent = reprojection_consistent(cur, before);
 #endif
         if (mq.z > 0.0 && consistent) {
+#ifdef COLOR_RGB9E5
+          h.color += w * unpack_rgb9e5(texelFetch(prev_color, q, 0).x);
+#else
           h.color += w * texelFetch(prev_color, q, 0).rgb;
+#endif
           sum_m += w * mixture_term(moments_from_stored(mq.xy));
           h.len += w * mq.z;
           sum_w += w;
@@ -168,6 +184,10 @@ void main() {
   }
   // Rounded to the nearest half: a store rounding toward zero loses energy every frame (common/color.glsl).
   // Finite and in the fp16 range (samples and histories are clamped): the integer form.
+#ifdef COLOR_RGB9E5
+  imageStore(integrated, p, uvec4(pack_rgb9e5(color), 0u, 0u, 0u));
+#else
   imageStore(integrated, p, round_to_half_clamped(clamp_fp16(vec4(color, m.variance))));
+#endif
   imageStore(moments, p, round_to_half_clamped(vec4(moments_to_stored(m), n, 0.0)));
 }

@@ -20,7 +20,7 @@ struct FrameInput {
 };
 
 struct FrameOutput {
-  ImageD hdr, display, color_history, moments, integrated, filtered;
+  ImageD hdr, display, color_history, moments, integrated, filtered;  // colour histories as values (rgb, 0)
 };
 
 class DenoiserChain {
@@ -60,6 +60,11 @@ class DenoiserChain {
     if (spatial) harness_.readback(g, *out.integrated, &result.integrated);
     harness_.run(g);
     if (!spatial) result.integrated = result.filtered;
+    // A spatial chain keeps its colour history and temporal result as RGB9E5 words: their values.
+    if (g.resource(*out.color_history).format == Format::R32Uint)
+      result.color_history = rgb9e5_values(result.color_history);
+    if (spatial && g.resource(*out.integrated).format == Format::R32Uint)
+      result.integrated = rgb9e5_values(result.integrated);
     return result;
   }
 

@@ -62,6 +62,12 @@ int rgb9e5_not_canonical(const ImageD& words) {
     }
   return count;
 }
+// A colour history (RGB9E5 words, as a spatial chain keeps it) holds `color` (an RGBA16F result
+// of the same fp32 values): within rgb9e5_tolerance, with canonical exponents.
+void check_history_words(const ImageD& words, const ImageD& color, const std::string& what) {
+  DENOISE_CHECK_CLOSE(compare(rgb9e5_values(words), color, 3, rgb9e5_tolerance(words, 0)), what);
+  CHECK_MESSAGE(rgb9e5_not_canonical(words) == 0, what);
+}
 auto fp32_tolerance(double magnitude) {
   return [magnitude](double) { return 1e-5 * magnitude; };
 }
@@ -444,13 +450,15 @@ TEST_CASE(
 
 TEST_CASE(
     "denoise passes: temporal pass matches the CPU reference (constant and adaptive alpha, dropped and clamped samples "
-    "counted)") {
+    "counted, the colour history and result in RGBA16F and as RGB9E5 words)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
-  for (const bool adaptive : {false, true}) {
+  for (const auto& [adaptive, words] : {std::pair{false, false}, {true, false}, {false, true}, {true, true}}) {
+    const F color_format = words ? F::R32Uint : F::RGBA16F;  // the EMA's, a spatial chain's
     for (const auto& size : kSizes) {
       const int w = size[0], h = size[1];
       CAPTURE(adaptive);
+      CAPTURE(words);
       CAPTURE(w);
       const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
       TemporalCase c = random_temporal_case(37u + static_cast<std::uint32_t>(w), w, h);
@@ -467,11 +475,11 @@ TEST_CASE(
       for (int frame = 0; frame < 2; ++frame) {
         RenderGraph g;
         const auto dn = g.add_image("depth_normal", uw, uh, F::RGBA16Uint, Lifetime::Persistent);
-        const auto color = g.add_image("color_history", uw, uh, F::RGBA16F, Lifetime::Persistent);
+        const auto color = g.add_image("color_history", uw, uh, color_format, Lifetime::Persistent);
         const auto mom = g.add_image("moments", uw, uh, F::RGBA16F, Lifetime::Persistent);
         if (frame == 0) {
           harness.fill(g, dn, depth_normal_texels(c.prev_dn));
-          harness.fill(g, color, c.prev_color);
+          harness.fill(g, color, words ? rgb9e5_words(c.prev_color) : c.prev_color);
           harness.fill(g, mom, c.prev_moments);
         } else {
           harness.fill(g, dn, depth_normal_texels(c.dn));
@@ -481,7 +489,7 @@ TEST_CASE(
           res.depth_normal = dn;
           res.color_history = color;
           res.moments = mom;
-          res.integrated = g.add_image("integrated", uw, uh, F::RGBA16F);
+          res.integrated = g.add_image("integrated", uw, uh, color_format);
           res.counters = counters.import(g);
           if (adaptive) res.gradient = harness.input(g, "gradient", c.gradient, F::RGBA16F);
           passes::add_temporal(g, pipelines, res, settings);
@@ -492,14 +500,21 @@ TEST_CASE(
       }
       const ImageD illumination = quantize(c.illumination, F::RGBA32F), motion = quantize(c.motion, F::RG32F);
       const ImageD dn = quantize(c.dn, F::RGBA32F), prev_dn = quantize(c.prev_dn, F::RGBA32F);
-      const ImageD prev_color = quantize(c.prev_color, F::RGBA16F), prev_moments = quantize(c.prev_moments, F::RGBA16F);
+      const ImageD prev_color = words ? rgb9e5_values(rgb9e5_words(c.prev_color)) : quantize(c.prev_color, F::RGBA16F);
+      const ImageD prev_moments = quantize(c.prev_moments, F::RGBA16F);
       const ImageD gradient = quantize(c.gradient, F::RGBA16F);
       ref::TemporalInputs in{
           &illumination, &motion, &dn, &prev_dn, &prev_color, &prev_moments, adaptive ? &gradient : nullptr};
       const auto want =
           ref::temporal(in, {settings.alpha, settings.moments_alpha, settings.history_cap, true, settings.antilag});
-      DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 3, fp16_tolerance(4)), "temporal colour");
-      DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 4, fp16_tolerance(20)), "temporal variance");
+      if (words) {
+        DENOISE_CHECK_CLOSE(compare(rgb9e5_values(integrated), want.integrated, 3, rgb9e5_tolerance(integrated, 4)),
+                            "temporal colour, RGB9E5 words");
+        CHECK(rgb9e5_not_canonical(integrated) == 0);
+      } else {
+        DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 3, fp16_tolerance(4)), "temporal colour");
+        DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 4, fp16_tolerance(20)), "temporal variance");
+      }
       DENOISE_CHECK_CLOSE(compare_moments(moments, want.moments, 40, 20), "temporal moments and length");
       const auto counts = counters.read();
       CHECK(counts.nan_samples == want.nan_samples);
@@ -519,8 +534,8 @@ TEST_CASE(
 
 namespace {
 
-// The variance pass on these inputs (integrated, moments and albedo as RGBA16F, depth_normal as
-// RGBA32F), read back.
+// The variance pass on these inputs (integrated as RGB9E5 words, as a spatial chain keeps it,
+// moments and albedo as RGBA16F, depth_normal as its texels), read back.
 ImageD run_variance(hal::Device& device, passes::PipelineCache& pipelines, const ImageD& integrated,
                     const ImageD& moments, const ImageD& dn, const ImageD& albedo,
                     const asvgf::DenoiseSettings& settings) {
@@ -528,12 +543,12 @@ ImageD run_variance(hal::Device& device, passes::PipelineCache& pipelines, const
   RenderGraph g;
   const auto out = g.add_image("color_variance", static_cast<std::uint32_t>(integrated.width),
                                static_cast<std::uint32_t>(integrated.height), F::RGBA16F);
-  passes::add_variance(
-      g, pipelines,
-      {harness.input(g, "integrated", integrated, F::RGBA16F), harness.input(g, "moments", moments, F::RGBA16F),
-       harness.input(g, "depth_normal", depth_normal_texels(dn), F::RGBA16Uint), out,
-       harness.input(g, "albedo", albedo, F::RGBA16F)},
-      settings);
+  passes::add_variance(g, pipelines,
+                       {harness.input(g, "integrated", rgb9e5_words(integrated), F::R32Uint),
+                        harness.input(g, "moments", moments, F::RGBA16F),
+                        harness.input(g, "depth_normal", depth_normal_texels(dn), F::RGBA16Uint), out,
+                        harness.input(g, "albedo", albedo, F::RGBA16F)},
+                       settings);
   ImageD got;
   harness.readback(g, out, &got);
   harness.run(g);
@@ -556,7 +571,7 @@ TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and
     const ImageD albedo = random_color(r, w, h, 0.05, 1, 1);  // textured: a different albedo at every pixel
     const ImageD got = run_variance(*device, pipelines, integrated, moments, dn, albedo, settings);
     const ImageD want = ref::variance(
-        quantize(integrated, F::RGBA16F), quantize(moments, F::RGBA16F), quantize(dn, F::RGBA32F),
+        rgb9e5_values(rgb9e5_words(integrated)), quantize(moments, F::RGBA16F), quantize(dn, F::RGBA32F),
         quantize(albedo, F::RGBA16F),
         {settings.sigma_z, settings.sigma_n,
          asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height)), settings.min_history});
@@ -655,7 +670,7 @@ TEST_CASE(
                                       harness.input(g, "depth_normal", depth_normal_texels(dn), F::RGBA16Uint), out,
                                       std::nullopt};
           const bool tap = iteration == 1;
-          if (tap) res.color_history = g.add_image("color_history", uw, uh, F::RGBA16F, Lifetime::Persistent);
+          if (tap) res.color_history = g.add_image("color_history", uw, uh, F::R32Uint, Lifetime::Persistent);
           passes::add_atrous(g, pipelines, res, iteration, settings);
           ImageD got, history;
           harness.readback(g, out, &got);
@@ -666,7 +681,7 @@ TEST_CASE(
                           {1 << iteration, static_cast<int>(kernel), settings.sigma_z, settings.sigma_n,
                            asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height))});
           DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(4)), "atrous");
-          if (tap) CHECK(history.data == got.data);
+          if (tap) check_history_words(history, got, "history tap");
         }
       }
     }
@@ -727,12 +742,12 @@ TEST_CASE(
     const auto middle = g.add_buffer("atrous.2", packed_bytes);
     const auto last = g.add_image("atrous.3", uw, uh, F::RGBA16F);
     // A history tap on the first and on a middle iteration (both variants; a chain has one).
-    const auto history_first = g.add_image("color_history.1", uw, uh, F::RGBA16F, Lifetime::Persistent);
-    const auto history = g.add_image("color_history.2", uw, uh, F::RGBA16F, Lifetime::Persistent);
+    const auto history_first = g.add_image("color_history.1", uw, uh, F::R32Uint, Lifetime::Persistent);
+    const auto history = g.add_image("color_history.2", uw, uh, F::R32Uint, Lifetime::Persistent);
     const ImageD estimate_albedo = random_color(r, w, h, 0.05, 1, 1);
     passes::add_atrous(
         g, pipelines,
-        {harness.input(g, "integrated", color, F::RGBA16F), dn_in, first, history_first, "", surface,
+        {harness.input(g, "integrated", rgb9e5_words(color), F::R32Uint), dn_in, first, history_first, "", surface,
          passes::VarianceEstimateInputs{harness.input(g, "moments", moments, F::RGBA16F),
                                         harness.input(g, "estimate_albedo", estimate_albedo, F::RGBA16F)}},
         0, settings);
@@ -742,7 +757,7 @@ TEST_CASE(
     const ImageD albedo = random_color(r, w, h, 0, 1, 1);
     const auto hdr = g.add_image("hdr", uw, uh, F::RGBA32F), display = g.add_image("display", uw, uh, F::RGBA8Unorm);
     const bool composite_tap = w % 2 == 1;
-    const auto history_last = g.add_image("color_history.3", uw, uh, F::RGBA16F, Lifetime::Persistent);
+    const auto history_last = g.add_image("color_history.3", uw, uh, F::R32Uint, Lifetime::Persistent);
     passes::add_atrous(
         g, pipelines,
         {middle, dn_in, 0, composite_tap ? std::optional(history_last) : std::nullopt, "", surface, std::nullopt,
@@ -752,7 +767,7 @@ TEST_CASE(
     // The same compositing iteration with half-float radiance (HDR_HALF), with the history tap where
     // the other has none (both variants over the sizes).
     const auto hdr_half = g.add_image("hdr.half", uw, uh, F::RGBA16F);
-    const auto history_half = g.add_image("color_history.half", uw, uh, F::RGBA16F, Lifetime::Persistent);
+    const auto history_half = g.add_image("color_history.half", uw, uh, F::R32Uint, Lifetime::Persistent);
     passes::AtrousResources last_half{
         middle,
         dn_in,
@@ -792,7 +807,7 @@ TEST_CASE(
     // pass's image would be, it put the variance channel at 0.98 of the tolerance on these images
     // and past it (1.02) on others, against 0.31-0.45 unrounded.
     const ImageD color_variance = ref::variance(
-        quantize(color, F::RGBA16F), quantize(moments, F::RGBA16F), dn_q, quantize(estimate_albedo, F::RGBA16F),
+        rgb9e5_values(rgb9e5_words(color)), quantize(moments, F::RGBA16F), dn_q, quantize(estimate_albedo, F::RGBA16F),
         {settings.sigma_z, settings.sigma_n,
          asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height)), settings.min_history});
     DENOISE_CHECK_CLOSE(compare(t1.color, ref::atrous(color_variance, dn_q, params(0)), 4, fp16_tolerance(80)),
@@ -813,11 +828,10 @@ TEST_CASE(
                         "last iteration's composite hdr, half floats");
     DENOISE_CHECK_CLOSE(compare(got_display, want.display, 3, [](double) { return 1.0 / 255.0; }),
                         "last iteration's composite display");
-    if (composite_tap)
-      DENOISE_CHECK_CLOSE(compare(got_history_last, got_last, 4, fp16_tolerance(0)), "last history tap");
-    // The same fp32 result, stored by the image format and by packHalf2x16 (rounding may differ).
-    DENOISE_CHECK_CLOSE(compare(got_history_first, t1.color, 4, fp16_tolerance(0)), "first history tap");
-    DENOISE_CHECK_CLOSE(compare(got_history, t2.color, 4, fp16_tolerance(0)), "middle history tap");
+    // The same fp32 result, stored as RGB9E5 words and by the image format or packHalf2x16.
+    if (composite_tap) check_history_words(got_history_last, got_last, "last history tap");
+    check_history_words(got_history_first, t1.color, "first history tap");
+    check_history_words(got_history, t2.color, "middle history tap");
     // Depth to the bit; normal x and y within one fp16 ulp (2^-11 below 1: a device may round
     // toward zero), z rebuilt within min(sqrt(d), d / |z|) for d = 1.4e-3 (the largest change of
     // 1 - x^2 - y^2, 2 (|x| + |y|) 2^-11), which also holds its sign wherever |z| exceeds the bound;
@@ -858,20 +872,23 @@ TEST_CASE(
   const auto img = g.add_image("color_in", 8, 8, F::RGBA16F), dn = g.add_image("depth_normal", 8, 8, F::RGBA16Uint);
   const auto alb = g.add_image("albedo", 8, 8, F::RGBA16F);
   const passes::VarianceEstimateInputs mom{g.add_image("moments", 8, 8, F::RGBA16F), alb};
+  // The first packed iteration's temporal result: RGB9E5 words, as a spatial chain keeps it.
+  const auto words = g.add_image("integrated", 8, 8, F::R32Uint);
   const auto packed = [&](const char* name, std::uint64_t bytes) { return g.add_buffer(name, bytes); };
   const auto surface = packed("surface", 8 * 8 * 8);
-  CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, packed("out", 8 * 8 * 8), std::nullopt, "", surface, mom},
-                                     1, settings),
+  CHECK_THROWS_AS(passes::add_atrous(
+                      g, pipelines, {words, dn, packed("out", 8 * 8 * 8), std::nullopt, "", surface, mom}, 1, settings),
                   std::invalid_argument);
   // A packed iteration writes or reads the surface texels: without their buffer the chain has none.
   CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines, {img, dn, packed("no_surface", 8 * 8 * 8), std::nullopt, "", std::nullopt, mom},
-                         0, settings),
+      passes::add_atrous(
+          g, pipelines, {words, dn, packed("no_surface", 8 * 8 * 8), std::nullopt, "", std::nullopt, mom}, 0, settings),
       std::invalid_argument);
   // The first packed iteration estimates the variance from the moments and albedo; no other reads them.
-  CHECK_THROWS_AS(passes::add_atrous(
-                      g, pipelines, {img, dn, packed("no_moments", 8 * 8 * 8), std::nullopt, "", surface}, 0, settings),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      passes::add_atrous(g, pipelines, {words, dn, packed("no_moments", 8 * 8 * 8), std::nullopt, "", surface}, 0,
+                         settings),
+      std::invalid_argument);
   CHECK_THROWS_AS(
       passes::add_atrous(g, pipelines,
                          {img, dn, g.add_image("image_out", 8, 8, F::RGBA16F), std::nullopt, "", std::nullopt, mom}, 0,
@@ -879,11 +896,11 @@ TEST_CASE(
       std::invalid_argument);
   // A buffer or image that does not cover depth_normal would be read or written out of range.
   CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines, {img, dn, packed("small", 8 * 8 * 8 - 8), std::nullopt, "", surface, mom}, 0,
+      passes::add_atrous(g, pipelines, {words, dn, packed("small", 8 * 8 * 8 - 8), std::nullopt, "", surface, mom}, 0,
                          settings),
       std::invalid_argument);
   CHECK_THROWS_AS(passes::add_atrous(g, pipelines,
-                                     {img, dn, packed("out.2", 8 * 8 * 8), std::nullopt, "",
+                                     {words, dn, packed("out.2", 8 * 8 * 8), std::nullopt, "",
                                       packed("small_surface", 8 * 8 * 8 - 8), mom},
                                      0, settings),
                   std::invalid_argument);
@@ -891,21 +908,31 @@ TEST_CASE(
                   std::invalid_argument);
   CHECK_THROWS_AS(
       passes::add_atrous(g, pipelines,
-                         {img, dn, packed("narrow_moments", 8 * 8 * 8), std::nullopt, "", surface,
+                         {words, dn, packed("narrow_moments", 8 * 8 * 8), std::nullopt, "", surface,
                           passes::VarianceEstimateInputs{g.add_image("moments.small", 7, 8, F::RGBA16F), alb}},
                          0, settings),
       std::invalid_argument);
   CHECK_THROWS_AS(
       passes::add_atrous(g, pipelines,
-                         {img, dn, packed("narrow_albedo", 8 * 8 * 8), std::nullopt, "", surface,
+                         {words, dn, packed("narrow_albedo", 8 * 8 * 8), std::nullopt, "", surface,
                           passes::VarianceEstimateInputs{mom.moments, g.add_image("albedo.small", 8, 7, F::RGBA16F)}},
                          0, settings),
       std::invalid_argument);
-  CHECK_NOTHROW(passes::add_atrous(g, pipelines, {img, dn, packed("fits", 8 * 8 * 8), std::nullopt, "", surface, mom},
+  CHECK_NOTHROW(passes::add_atrous(g, pipelines, {words, dn, packed("fits", 8 * 8 * 8), std::nullopt, "", surface, mom},
                                    0, settings));
+  // The temporal result and the colour history in another format than RGB9E5 words.
+  CHECK_THROWS_AS(
+      passes::add_atrous(g, pipelines, {img, dn, packed("rgba16f_in", 8 * 8 * 8), std::nullopt, "", surface, mom}, 0,
+                         settings),
+      std::invalid_argument);
+  CHECK_THROWS_AS(passes::add_atrous(g, pipelines,
+                                     {words, dn, packed("rgba16f_history", 8 * 8 * 8),
+                                      g.add_image("history.rgba16f", 8, 8, F::RGBA16F), "", surface, mom},
+                                     0, settings),
+                  std::invalid_argument);
   // The local mean's block sums: from the first packed iteration only with its history tap, and in
   // blocks of 1, 2, 4 or 8 pixels (whole blocks inside a workgroup).
-  const auto sums = g.add_image("sums", 8, 8, F::RGBA32F), history = g.add_image("history", 8, 8, F::RGBA16F);
+  const auto sums = g.add_image("sums", 8, 8, F::RGBA32F), history = g.add_image("history", 8, 8, F::R32Uint);
   passes::AtrousResources middle{
       packed("middle_in", 8 * 8 * 8), dn, packed("middle_out", 8 * 8 * 8), std::nullopt, "", surface};
   middle.local_mean_sums = {sums, std::nullopt, 1};
@@ -916,7 +943,7 @@ TEST_CASE(
   CHECK_THROWS_AS(passes::add_atrous(g, pipelines, middle, 1, settings), std::invalid_argument);
   middle.color_history = history;
   CHECK_NOTHROW(passes::add_atrous(g, pipelines, middle, 1, settings));
-  passes::AtrousResources block3{img, dn, packed("block3", 8 * 8 * 8), history, "", surface, mom};
+  passes::AtrousResources block3{words, dn, packed("block3", 8 * 8 * 8), history, "", surface, mom};
   block3.local_mean_sums = {sums, std::nullopt, 3};
   CHECK_THROWS_AS(passes::add_atrous(g, pipelines, block3, 0, settings), std::invalid_argument);
   block3.local_mean_sums->block = 2;
@@ -957,18 +984,28 @@ TEST_CASE(
       GraphHarness harness(*device);
       RenderGraph g;
       const auto corrected = g.add_image("corrected", w, h, F::RGBA16F);
-      const auto temporal_id = harness.input(g, "temporal", temporal, F::RGBA16F);
+      // The temporal result as a spatial chain keeps it: RGB9E5 words.
+      const ImageD temporal_words = rgb9e5_words(temporal);
+      const auto temporal_id = harness.input(g, "temporal", temporal_words, F::R32Uint);
       const auto filtered_id = harness.input(g, "filtered", filtered, F::RGBA16F);
       const passes::LocalMeanImages images =
           passes::add_local_mean(g, pipelines, {temporal_id, filtered_id, corrected, "local_mean", gated}, settings);
+      // The tapped history's correction: the filtered colour read and the corrected one written as
+      // RGB9E5 words, as the colour history is kept.
+      const ImageD filtered_words = rgb9e5_words(filtered);
+      const auto corrected_words = g.add_image("corrected.words", w, h, F::R32Uint);
+      passes::add_local_mean(g, pipelines,
+                             {temporal_id, harness.input(g, "filtered.words", filtered_words, F::R32Uint),
+                              corrected_words, "local_mean.words", gated},
+                             settings);
       // The displayed colour's correction as the denoiser builds it: the temporal terms from the
       // first correction's block sums (its own temporal input left black, so that reading it would
       // show), applied by the composite (albedo 1, clamp curve: HDR radiance is the corrected colour).
       const auto shared = g.add_image("corrected_shared", w, h, F::RGBA16F);
-      const auto black = harness.input(g, "black", ImageD(w, h, 4), F::RGBA16F);
+      const auto black = harness.input(g, "black", ImageD(w, h, 1), F::R32Uint);
       const passes::LocalMeanImages second = passes::add_local_mean(
           g, pipelines, {black, filtered_id, shared, "local_mean.shared", gated, images.block_sums}, settings);
-      ImageD got, got_shared, got_hdr, got_hdr_rgb9e5, want_rgb9e5, got_hdr_half;
+      ImageD got, got_shared, got_hdr, got_hdr_rgb9e5, want_rgb9e5, got_hdr_half, got_words;
       if (gated) {
         const auto hdr = g.add_image("hdr", w, h, F::RGBA32F);
         const auto albedo_id = harness.input(g, "albedo", ImageD(w, h, 4, 1.0), F::RGBA16F);
@@ -1004,12 +1041,19 @@ TEST_CASE(
       }
       harness.readback(g, corrected, &got);
       harness.readback(g, shared, &got_shared);
+      harness.readback(g, corrected_words, &got_words);
       harness.run(g);
       const passes::LocalMeanBlocks blocks = passes::local_mean_blocks(k);
       if (k < 16) CHECK(blocks.block == 1);  // small windows are plain k x k boxes
-      const ImageD want = ref::local_mean(quantize(temporal, F::RGBA16F), quantize(filtered, F::RGBA16F), blocks.block,
-                                          blocks.radius, gated);
+      const ImageD temporal_values = rgb9e5_values(temporal_words);
+      const ImageD want =
+          ref::local_mean(temporal_values, quantize(filtered, F::RGBA16F), blocks.block, blocks.radius, gated);
       DENOISE_CHECK_CLOSE(compare(got, want, 4, fp16_tolerance(4)), "local mean");
+      const ImageD want_words =
+          ref::local_mean(temporal_values, rgb9e5_values(filtered_words), blocks.block, blocks.radius, gated);
+      DENOISE_CHECK_CLOSE(compare(rgb9e5_values(got_words), want_words, 3, rgb9e5_tolerance(got_words, 4)),
+                          "local mean of RGB9E5 words");
+      CHECK(rgb9e5_not_canonical(got_words) == 0);
       if (k == 3) CHECK(got.at(1, 1, 0) == 0.0);  // inside the black corner: 0 stays 0, no NaN
       // The shared temporal sums and the composite's own correction change nothing: the same bits.
       const auto exact = [](double) { return 1.0; };
@@ -1025,11 +1069,12 @@ TEST_CASE(
 // the first packed iteration's, with the history tap and without (the temporal result's terms and its own), and a
 // packed-in last iteration's (its own, the temporal terms from the first's), against the blocks
 // pass over the images those iterations write: the same sums in the same order, bit for bit. And the
-// history corrected by the next iteration (HistoryCorrection) against the correction's own pass.
+// history corrected by the next iteration (HistoryCorrection) against the correction's own pass: the
+// same fp32 values, stored as RGB9E5 words by the one and rounded to halves by the other.
 TEST_CASE(
-    "denoise passes: the a-trous iterations' local-mean block sums are the blocks pass's and the history they "
-    "correct is the correction pass's, bit for bit (blocks of 1 to 8 pixels, partial blocks at the edges, several "
-    "workgroups)") {
+    "denoise passes: the a-trous iterations' local-mean block sums are the blocks pass's, bit for bit, and the "
+    "history they correct is the correction pass's within its RGB9E5 rounding (blocks of 1 to 8 pixels, partial "
+    "blocks at the edges, several workgroups)") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   for (const auto& size : {std::array<int, 2>{37, 21}, std::array<int, 2>{70, 35}}) {
@@ -1049,12 +1094,13 @@ TEST_CASE(
       GraphHarness harness(*device);
       RenderGraph g;
       const auto dn_in = harness.input(g, "depth_normal", depth_normal_texels(dn), F::RGBA16Uint);
-      const auto integrated = harness.input(g, "integrated", color, F::RGBA16F);
+      const ImageD words = rgb9e5_words(color);  // the temporal result, as a spatial chain keeps it
+      const auto integrated = harness.input(g, "integrated", words, F::R32Uint);
       const std::uint64_t packed_bytes = std::uint64_t{uw} * uh * 8;
       const auto surface = g.add_buffer("filter_surface", packed_bytes);
       const auto first = g.add_buffer("atrous.1", packed_bytes), middle = g.add_buffer("atrous.2", packed_bytes);
       const auto last = g.add_image("atrous.3", uw, uh, F::RGBA16F);
-      const auto history = g.add_image("color_history", uw, uh, F::RGBA16F, Lifetime::Persistent);
+      const auto history = g.add_image("color_history", uw, uh, F::R32Uint, Lifetime::Persistent);
       const auto history_sums = passes::add_local_mean_sums_image(g, "history", uw, uh, k);
       const auto display_sums = passes::add_local_mean_sums_image(g, "display", uw, uh, k);
       passes::AtrousResources a1{integrated,
@@ -1077,17 +1123,19 @@ TEST_CASE(
       a1_untapped.local_mean_sums = {untapped_sums, std::nullopt, block};
       passes::add_atrous(g, pipelines, a1_untapped, 0, settings);
       // The second iteration writes the corrected history itself (atrous.hpp's HistoryCorrection),
-      // with the box means of the reference's history correction (below).
-      const auto history_corrected = g.add_image("color_history.corrected", uw, uh, F::RGBA16F);
+      // with the box means of the first iteration's sums, as the denoiser's graph does (below).
+      const auto history_corrected = g.add_image("color_history.corrected", uw, uh, F::R32Uint);
       passes::AtrousResources a2{first, dn_in, middle, history_corrected, "", surface};
       const passes::LocalMeanBlocks lmb = passes::local_mean_blocks(k);
       passes::AtrousResources a3{middle, dn_in, last, std::nullopt, "", surface};
       a3.local_mean_sums = {display_sums, history_sums, block};
-      // The blocks passes over the images the iterations wrote, and the history's last pass.
-      const auto corrected_history = g.add_image("corrected.history", uw, uh, F::RGBA16F);
-      const auto want_history = passes::add_local_mean(
-          g, pipelines, {integrated, history, corrected_history, "ref.history", false}, settings);
-      a2.corrects_history = {want_history.box_means, lmb.block, lmb.radius};
+      // The box pass over the first iteration's sums; the blocks passes over the images the
+      // iterations wrote are below (the history's: a second graph over the first iteration's colour).
+      passes::LocalMeanResources history_box{integrated, history, history, "history", false};
+      history_box.block_sums = history_sums;
+      history_box.apply_pass = false;
+      const auto box = passes::add_local_mean(g, pipelines, history_box, settings);
+      a2.corrects_history = {box.box_means, lmb.block, lmb.radius};
       passes::add_atrous(g, pipelines, a2, 1, settings);
       passes::add_atrous(g, pipelines, a3, 2, settings);
       // The same last iteration writing its colour as RGB9E5 for the composite (RGB9E5_OUT).
@@ -1098,22 +1146,35 @@ TEST_CASE(
       a3_rgb9e5.name_suffix = ".rgb9e5";
       passes::add_atrous(g, pipelines, a3_rgb9e5, 2, settings);
       const auto want_display = passes::add_local_mean(
-          g, pipelines,
-          {integrated, last, g.add_image("corrected", uw, uh, F::RGBA16F), "ref", true, want_history.block_sums},
+          g, pipelines, {integrated, last, g.add_image("corrected", uw, uh, F::RGBA16F), "ref", true, history_sums},
           settings);
-      ImageD got_h, got_untapped, got_d, want_h, want_d, got_history, want_history_image;
+      ImageD got_h, got_untapped, got_d, want_h, want_d, got_history, want_history_image, got_first, got_surface;
       harness.readback(g, untapped_sums, &got_untapped);
       harness.readback(g, history_corrected, &got_history);
-      harness.readback(g, corrected_history, &want_history_image);
+      harness.readback_buffer(g, first, w, h, 2, &got_first);
+      harness.readback_buffer(g, surface, w, h, 2, &got_surface);
       harness.readback(g, history_sums, &got_h);
       harness.readback(g, display_sums, &got_d);
       ImageD got_d_rgb9e5, got_last, got_last_words;
       harness.readback(g, display_sums_rgb9e5, &got_d_rgb9e5);
       harness.readback(g, last, &got_last);
       harness.readback(g, a3_rgb9e5.color_out, &got_last_words);
-      harness.readback(g, want_history.block_sums, &want_h);
       harness.readback(g, want_display.block_sums, &want_d);
       harness.run(g);
+      // The history's correction by its own passes over the first iteration's colour (the packed
+      // texels' halves, which its sums and the second iteration read): blocks, box, and the plain
+      // RGBA16F correction, which rounds the same fp32 values to halves.
+      RenderGraph g2;
+      const auto first_color =
+          harness.input(g2, "atrous.1.color", unpack_filter_texels(got_first, got_surface).color, F::RGBA16F);
+      const auto corrected_history = g2.add_image("corrected.history", uw, uh, F::RGBA16F);
+      const auto want_history = passes::add_local_mean(
+          g2, pipelines,
+          {harness.input(g2, "integrated", words, F::R32Uint), first_color, corrected_history, "ref.history", false},
+          settings);
+      harness.readback(g2, want_history.block_sums, &want_h);
+      harness.readback(g2, corrected_history, &want_history_image);
+      harness.run(g2);
       const auto exact = [](double) { return 1.0; };
       REQUIRE(got_h.width == (w + block - 1) / block);
       CHECK(compare(got_h, want_h, 4, exact).worst_error == 0.0);
@@ -1124,7 +1185,7 @@ TEST_CASE(
       DENOISE_CHECK_CLOSE(compare(rgb9e5_values(got_last_words), got_last, 3, rgb9e5_tolerance(got_last_words, 0)),
                           "last iteration's RGB9E5 colour");
       CHECK(rgb9e5_not_canonical(got_last_words) == 0);
-      CHECK(compare(got_history, want_history_image, 4, exact).worst_error == 0.0);
+      check_history_words(got_history, want_history_image, "corrected history");
       CHECK(want_h.at(0, 0, 3) == double(std::min(block, h) * std::min(block, w)));  // a whole block's pixels
     }
   }

@@ -85,6 +85,13 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
   if (rgb9e5_out && !(packed_in && !r.color_history && r.local_mean_sums))
     throw std::invalid_argument("add_atrous: an RGB9E5 (R32Uint) color_out '" + out_decl.name +
                                 "' is written by a packed-in last iteration with the local mean's block sums only");
+  const auto rgb9e5_words = [&graph](graph::ResourceId id, const char* what) {
+    if (graph.resource(id).format != hal::Format::R32Uint)
+      throw std::invalid_argument(std::string("add_atrous: ") + what + " '" + graph.resource(id).name +
+                                  "' is R32Uint (RGB9E5 words, as a spatial chain keeps it)");
+  };
+  if (r.color_history) rgb9e5_words(*r.color_history, "the colour history");
+  if (first_packed) rgb9e5_words(r.color_in, "the first packed iteration's temporal result");
   if (r.corrects_history && !(packed_in && packed_out && r.color_history))
     throw std::invalid_argument(
         "add_atrous: only a packed middle iteration corrects the colour history, and it "

@@ -23,13 +23,13 @@ struct AtrousResources {
   // a chain's first and last pass on, with the packed surface texels in `surface`. A buffer out from
   // an image in is the first iteration only (it reads a shared-memory tile that needs step 1): it
   // writes `surface`, and it estimates the variance itself: its color_in is the temporal pass's
-  // output (rgb, temporal variance) and it also reads `estimate` (the variance pass's other inputs).
+  // output (R32Uint, RGB9E5 words) and it also reads `estimate` (the variance pass's other inputs).
   graph::ResourceId color_in = 0;      // read
   graph::ResourceId depth_normal = 0;  // read (not by packed-in iterations): RGBA16UI; the size
   // written (not with `composite`); a packed-in last iteration with local_mean_sums may write an R32Uint
   // image instead: the colour alone as RGB9E5, for the composite's local-mean correction to read
   graph::ResourceId color_out = 0;
-  std::optional<graph::ResourceId> color_history;  // also written (persistent RGBA16F) at the history tap
+  std::optional<graph::ResourceId> color_history;  // also written (persistent R32Uint, RGB9E5 words) at the history tap
   std::string prefix;                              // of the pass name: "specular." for the second signal
   // Packed surface texels (8 bytes a pixel: depth, its gradient, normal): written by the first packed
   // iteration, read by every packed-in one instead of depth_normal.
@@ -71,8 +71,9 @@ struct AtrousResources {
 // without moments (or moments given to another), for `composite` on another iteration or with a
 // specular signal, for local_mean_sums anywhere but the first packed iteration (without
 // temporal_sums) or a packed-in last one without the history tap (with them), for an R32Uint
-// color_out anywhere but such a last one, and for corrects_history anywhere but a packed middle
-// iteration with color_history.
+// color_out anywhere but such a last one, for corrects_history anywhere but a packed middle
+// iteration with color_history, and for a color_history (or a first packed iteration's color_in)
+// that is not R32Uint.
 graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipelines, const AtrousResources& r,
                               int iteration, const DenoiseSettings& settings);
 

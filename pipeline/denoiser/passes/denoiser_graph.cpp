@@ -47,13 +47,17 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   const auto& decl = graph.resource(signal);
   const std::uint32_t w = decl.width, h = decl.height;
   Chain c;
-  c.color_history = graph.add_image(prefix + "color_history", w, h, F::RGBA16F, Lifetime::Persistent);
-  c.moments = graph.add_image(prefix + "moments", w, h, F::RGBA16F, Lifetime::Persistent);
   const bool spatial = filter == Filter::Spatiotemporal && s.atrous_iterations > 0;
+  // A spatial chain keeps its colour history and temporal result as RGB9E5 words (4 bytes a pixel
+  // instead of 8, written once and read at few places: temporal.comp's COLOR_RGB9E5); the EMA's
+  // result is its displayed colour, RGBA16F.
+  const F color_format = spatial ? F::R32Uint : F::RGBA16F;
+  c.color_history = graph.add_image(prefix + "color_history", w, h, color_format, Lifetime::Persistent);
+  c.moments = graph.add_image(prefix + "moments", w, h, F::RGBA16F, Lifetime::Persistent);
   // Without a spatial filter, or with history_tap -1, the temporal result is itself next frame's
   // colour history (and no a-trous iteration writes one).
   c.integrated =
-      spatial && s.history_tap >= 0 ? graph.add_image(prefix + "integrated", w, h, F::RGBA16F) : c.color_history;
+      spatial && s.history_tap >= 0 ? graph.add_image(prefix + "integrated", w, h, color_format) : c.color_history;
   add_temporal(graph, pipelines,
                {signal, virtual_motion.value_or(in.motion), in.depth_normal, c.color_history, c.moments, c.integrated,
                 in.counters, gradient, prefix, virtual_motion.has_value()},
@@ -98,7 +102,7 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
     const std::optional<ResourceId> history =
         !tap || history_corrected_next
             ? std::nullopt
-            : std::optional(local_mean ? graph.add_image(prefix + "color_history_filtered", w, h, F::RGBA16F)
+            : std::optional(local_mean ? graph.add_image(prefix + "color_history_filtered", w, h, color_format)
                                        : c.color_history);
     const bool last_packed = i + 1 == s.atrous_iterations && surface && !packed;
     // The local mean's block sums from the iteration whose result they sum, where it can (atrous.hpp):

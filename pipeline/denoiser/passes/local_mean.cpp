@@ -7,8 +7,10 @@
 #include <utility>
 
 #include "shaders/local_mean.apply.hpp"
+#include "shaders/local_mean.apply_rgb9e5.hpp"
 #include "shaders/local_mean.blocks.hpp"
 #include "shaders/local_mean.blocks_filtered.hpp"
+#include "shaders/local_mean.blocks_rgb9e5.hpp"
 #include "shaders/local_mean.box.hpp"
 
 namespace asvgf::passes {
@@ -50,6 +52,15 @@ LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelin
     throw std::invalid_argument("add_local_mean: window " + std::to_string(k) + " needs " + std::to_string(b.radius) +
                                 " blocks a side, more than the box pass holds (" + std::to_string(kLocalMeanMaxRadius) +
                                 ")");
+  // The tapped history's correction reads and writes RGB9E5 words, as the colour history is kept;
+  // the displayed colour's, RGBA16F.
+  const bool rgb9e5 = graph.resource(r.filtered).format == hal::Format::R32Uint;
+  if (graph.resource(r.temporal).format != hal::Format::R32Uint ||
+      graph.resource(r.corrected).format != graph.resource(r.filtered).format ||
+      (!rgb9e5 && graph.resource(r.filtered).format != hal::Format::RGBA16F))
+    throw std::invalid_argument("add_local_mean: the temporal result '" + graph.resource(r.temporal).name +
+                                "' is R32Uint (RGB9E5 words), and '" + graph.resource(r.filtered).name + "' and '" +
+                                graph.resource(r.corrected).name + "' are both RGBA16F or both R32Uint");
   const Uniforms u{width, height, b.radius, r.gated ? 1u : 0u, b.block};
   const graph::ResourceId sums =
       r.block_sums ? *r.block_sums : add_local_mean_sums_image(graph, r.name, width, height, k);
@@ -59,8 +70,11 @@ LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelin
                                 std::to_string(k));
   const graph::ResourceId means = graph.add_image(r.name + "_box_means", bw, bh, hal::Format::RGBA32F);
   if (!r.block_sums) {
-    const hal::ShaderInfo& blocks_shader =
-        r.temporal_sums ? asvgf::shaders::local_mean_blocks_filtered : asvgf::shaders::local_mean_blocks;
+    if (r.temporal_sums && rgb9e5)
+      throw std::invalid_argument("add_local_mean: the temporal terms' sums are the displayed colour's (RGBA16F)");
+    const hal::ShaderInfo& blocks_shader = r.temporal_sums ? asvgf::shaders::local_mean_blocks_filtered
+                                           : rgb9e5        ? asvgf::shaders::local_mean_blocks_rgb9e5
+                                                           : asvgf::shaders::local_mean_blocks;
     add_compute_pass(graph, r.name + ".blocks", blocks_shader, pipelines.get<Uniforms>(blocks_shader),
                      {r.temporal_sums ? Binding{"temporal_sums", *r.temporal_sums} : Binding{"temporal", r.temporal},
                       {"filtered", r.filtered},
@@ -71,7 +85,8 @@ LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelin
   add_compute_pass(graph, r.name + ".box", box_shader, pipelines.get<Uniforms>(box_shader),
                    {{"block_sums", sums}, {"box_means", means}}, to_bytes(u), {bw, bh, 1});
   if (!r.apply_pass) return {sums, means, b};
-  const hal::ShaderInfo& apply_shader = asvgf::shaders::local_mean_apply;
+  const hal::ShaderInfo& apply_shader =
+      rgb9e5 ? asvgf::shaders::local_mean_apply_rgb9e5 : asvgf::shaders::local_mean_apply;
   add_compute_pass(graph, r.name, apply_shader, pipelines.get<Uniforms>(apply_shader),
                    {{"box_means", means}, {"filtered", r.filtered}, {"corrected", r.corrected}}, to_bytes(u),
                    {u.width, u.height, 1});

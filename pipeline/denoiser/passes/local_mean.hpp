@@ -14,9 +14,11 @@
 namespace asvgf::passes {
 
 struct LocalMeanResources {
-  graph::ResourceId temporal = 0;   // read: the temporal pass's result (RGBA16F)
-  graph::ResourceId filtered = 0;   // read: the last a-trous iteration's output (RGBA16F image)
-  graph::ResourceId corrected = 0;  // written: RGBA16F, the filtered colour scaled (alpha kept)
+  graph::ResourceId temporal = 0;  // read: the temporal pass's result (R32Uint, RGB9E5 words)
+  // Read: the last a-trous iteration's output (RGBA16F image), or the tapped colour history (R32Uint,
+  // RGB9E5 words, as the history is kept).
+  graph::ResourceId filtered = 0;
+  graph::ResourceId corrected = 0;  // written, in filtered's format: the filtered colour scaled (alpha kept)
   std::string name = "local_mean";  // of the passes: the displayed colour's, or the tapped history's
   bool gated = true;                // false: the plain ratio (local_mean.comp)
   // Read where given, instead of the temporal result: the block sums of another correction of the
@@ -55,7 +57,8 @@ graph::ResourceId add_local_mean_sums_image(graph::RenderGraph& graph, const std
 
 // Adds "<name>.blocks" (unless r.block_sums), "<name>.box" and "<name>" (unless !r.apply_pass), for
 // local_mean_window(settings, ...) > 0. "<name>" writes `corrected` and, like every pass, runs only
-// where something reads it.
+// where something reads it. Throws std::invalid_argument for formats other than those above, and for
+// temporal_sums with an R32Uint `filtered`.
 LocalMeanImages add_local_mean(graph::RenderGraph& graph, PipelineCache& pipelines, const LocalMeanResources& r,
                                const DenoiseSettings& settings);
 

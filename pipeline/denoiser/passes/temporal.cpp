@@ -2,18 +2,32 @@
 
 #include <cstddef>
 #include <cstring>
+#include <stdexcept>
 
 #include "asvgf/graph_runtime.hpp"
 #include "shaders/temporal.adaptive.hpp"
+#include "shaders/temporal.adaptive_rgb9e5.hpp"
 #include "shaders/temporal.adaptive_virtual.hpp"
+#include "shaders/temporal.adaptive_virtual_rgb9e5.hpp"
 #include "shaders/temporal.constant.hpp"
+#include "shaders/temporal.constant_rgb9e5.hpp"
 #include "shaders/temporal.constant_virtual.hpp"
+#include "shaders/temporal.constant_virtual_rgb9e5.hpp"
 
 namespace asvgf::passes {
 namespace {
 
 // The uniform block as the shader tool generated it (every variant has the same block).
 using Uniforms = asvgf::shaders::temporal_constant_uniforms::Params;
+
+const hal::ShaderInfo& temporal_shader(bool adaptive, bool virtual_motion, bool rgb9e5) {
+  namespace sh = asvgf::shaders;
+  if (rgb9e5)
+    return virtual_motion ? (adaptive ? sh::temporal_adaptive_virtual_rgb9e5 : sh::temporal_constant_virtual_rgb9e5)
+                          : (adaptive ? sh::temporal_adaptive_rgb9e5 : sh::temporal_constant_rgb9e5);
+  return virtual_motion ? (adaptive ? sh::temporal_adaptive_virtual : sh::temporal_constant_virtual)
+                        : (adaptive ? sh::temporal_adaptive : sh::temporal_constant);
+}
 
 }  // namespace
 
@@ -27,10 +41,13 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
     u.gradient_width = g.width;
     u.gradient_height = g.height;
   }
-  const hal::ShaderInfo* shader =
-      r.virtual_motion
-          ? (adaptive ? &asvgf::shaders::temporal_adaptive_virtual : &asvgf::shaders::temporal_constant_virtual)
-          : (adaptive ? &asvgf::shaders::temporal_adaptive : &asvgf::shaders::temporal_constant);
+  const hal::Format history_format = graph.resource(r.color_history).format;
+  const bool rgb9e5 = history_format == hal::Format::R32Uint;
+  if (graph.resource(r.integrated).format != history_format || (!rgb9e5 && history_format != hal::Format::RGBA16F))
+    throw std::invalid_argument("add_temporal: '" + graph.resource(r.color_history).name + "' and '" +
+                                graph.resource(r.integrated).name +
+                                "' are both RGBA16F or both R32Uint (RGB9E5 words)");
+  const hal::ShaderInfo* shader = &temporal_shader(adaptive, r.virtual_motion, rgb9e5);
   const hal::PipelineHandle pipeline = pipelines.get<Uniforms>(*shader);
   std::vector<Binding> bindings{{"illumination", r.illumination},
                                 {"motion", r.motion},

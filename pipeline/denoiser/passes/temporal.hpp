@@ -14,18 +14,22 @@
 namespace asvgf::passes {
 
 struct TemporalResources {
-  graph::ResourceId illumination = 0;         // read: RGBA32F demodulated samples of this frame
-  graph::ResourceId motion = 0;               // read: RG32F, previous minus current pixel position
-  graph::ResourceId depth_normal = 0;         // read, and its history read: persistent RGBA16UI
-  graph::ResourceId color_history = 0;        // its history read: persistent RGBA16F (rgb, variance)
-  graph::ResourceId moments = 0;              // history read and written: persistent RGBA16F (E[l], sqrt(Var[l]), n, 0)
-  graph::ResourceId integrated = 0;           // written: RGBA16F (rgb, temporal variance); may be color_history
+  graph::ResourceId illumination = 0;  // read: RGBA32F demodulated samples of this frame
+  graph::ResourceId motion = 0;        // read: RG32F, previous minus current pixel position
+  graph::ResourceId depth_normal = 0;  // read, and its history read: persistent RGBA16UI
+  // Its history read: persistent, RGBA16F (rgb, variance) or R32Uint (RGB9E5 words, a spatial chain's).
+  graph::ResourceId color_history = 0;
+  graph::ResourceId moments = 0;  // history read and written: persistent RGBA16F (E[l], sqrt(Var[l]), n, 0)
+  // Written, in color_history's format: RGBA16F (rgb, temporal variance) or RGB9E5 words (rgb); may be
+  // color_history.
+  graph::ResourceId integrated = 0;
   graph::ResourceId counters = 0;             // read-written SanitizeCounters buffer
   std::optional<graph::ResourceId> gradient;  // read: 1/3 res RGBA16F (delta^, Delta^); adaptive alpha
   std::string prefix;                         // of the pass name: "specular." for the second signal
   bool virtual_motion = false;  // `motion` goes through reflections: loose depth test (specular_motion.comp)
 };
-// Adds "<prefix>temporal". The adaptive variant is used when a gradient is given.
+// Adds "<prefix>temporal". The adaptive variant is used when a gradient is given. Throws
+// std::invalid_argument where color_history and integrated are not both RGBA16F or both R32Uint.
 // Histories not valid this frame (first frame, GraphRuntime::reset_histories) reset every pixel.
 graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipelines, const TemporalResources& r,
                                 const DenoiseSettings& settings);

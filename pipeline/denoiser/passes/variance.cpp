@@ -1,6 +1,8 @@
 #include "denoiser/passes/variance.hpp"
 
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 
 #include "shaders/variance.hpp"
 
@@ -14,6 +16,9 @@ using Uniforms = asvgf::shaders::variance_uniforms::Params;
 
 graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipelines, const VarianceResources& r,
                                 const DenoiseSettings& s) {
+  if (graph.resource(r.integrated).format != hal::Format::R32Uint)
+    throw std::invalid_argument("add_variance: the temporal result '" + graph.resource(r.integrated).name +
+                                "' is R32Uint (RGB9E5 words, as a spatial chain keeps it)");
   const auto& decl = graph.resource(r.color_variance);
   const Uniforms u{decl.width,   decl.height, s.sigma_z, s.sigma_n, luminance_sigma(s, decl.width, decl.height),
                    s.min_history};
