@@ -1193,7 +1193,7 @@ TEST_CASE(
 
 TEST_CASE(
     "denoise passes: composite pass matches the CPU reference (clamp and ACES tone curves, RGBA32F and RGBA16F "
-    "radiance), zeroes and counts non-finite radiance") {
+    "radiance, one signal and the specular split), zeroes and counts non-finite radiance") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   passes::SanitizeCounters counters(*device);
@@ -1217,25 +1217,50 @@ TEST_CASE(
     RenderGraph g;
     const auto hdr = g.add_image("hdr", w, h, hdr_format);
     const auto display = g.add_image("display", w, h, F::RGBA8Unorm);
+    const auto illumination_id = harness.input(g, "illumination", illumination, F::RGBA32F);
+    const auto albedo_id = harness.input(g, "albedo", albedo, F::RGBA16F);
+    passes::add_composite(g, pipelines, {illumination_id, albedo_id, hdr, display, counters.import(g)}, settings);
+    // The specular split (SPLIT): the filtered specular light re-modulated by its own albedo, added.
+    const ImageD specular = random_color(r, w, h, 0, 3, 0);
+    ImageD specular_albedo = random_color(r, w, h, 0, 1, 1);
+    specular_albedo.at(6, 6, 2) = 0;  // its demodulation guard
+    const auto hdr_split = g.add_image("hdr.split", w, h, hdr_format);
+    const auto display_split = g.add_image("display.split", w, h, F::RGBA8Unorm);
     passes::add_composite(g, pipelines,
-                          {harness.input(g, "illumination", illumination, F::RGBA32F),
-                           harness.input(g, "albedo", albedo, F::RGBA16F), hdr, display, counters.import(g)},
+                          {illumination_id, albedo_id, hdr_split, display_split, counters.import(g),
+                           harness.input(g, "specular", specular, F::RGBA32F),
+                           harness.input(g, "specular_albedo", specular_albedo, F::RGBA16F)},
                           settings);
-    ImageD got_hdr, got_display;
+    ImageD got_hdr, got_display, got_hdr_split, got_display_split;
     harness.readback(g, hdr, &got_hdr);
     harness.readback(g, display, &got_display);
+    harness.readback(g, hdr_split, &got_hdr_split);
+    harness.readback(g, display_split, &got_display_split);
     harness.run(g);
-    const auto want = ref::composite(quantize(illumination, F::RGBA32F), quantize(albedo, F::RGBA16F),
-                                     settings.exposure, static_cast<int>(tonemap));
+    const ImageD light = quantize(illumination, F::RGBA32F), albedo_q = quantize(albedo, F::RGBA16F);
+    const auto want = ref::composite(light, albedo_q, settings.exposure, static_cast<int>(tonemap));
     // RGBA16F: rounded to the nearest half (below 2^-14 the last bit is the store's: one ulp there).
-    const auto hdr_tolerance = [half](double v) { return (half ? fp16_ulp(v) : 0.0) + 1e-5 * 3; };
+    const auto hdr_tolerance = [half](double v) { return (half ? fp16_ulp(v) : 0.0) + 1e-5 * 6; };
     DENOISE_CHECK_CLOSE(compare(got_hdr, want.hdr, 4, hdr_tolerance), "composite hdr");
     DENOISE_CHECK_CLOSE(compare(got_display, want.display, 4, [](double) { return 1.0 / 255.0; }), "composite display");
     CHECK(got_hdr.at(4, 4, 1) == 0.0);
     CHECK(got_hdr.at(5, 2, 0) == 0.0);
+    // The split's radiance as one signal of albedo 1: the reference's tone curve then applies to it.
+    ImageD both(w, h, 4), ones(w, h, 4, 1.0);
+    const ImageD specular_albedo_q = quantize(specular_albedo, F::RGBA16F);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        for (int c = 0; c < 3; ++c)
+          both.at(x, y, c) = light.at(x, y, c) * std::max(albedo_q.at(x, y, c), 1e-3) +
+                             specular.at(x, y, c) * std::max(specular_albedo_q.at(x, y, c), 1e-3);
+    const auto want_split = ref::composite(both, ones, settings.exposure, static_cast<int>(tonemap));
+    DENOISE_CHECK_CLOSE(compare(got_hdr_split, want_split.hdr, 4, hdr_tolerance), "composite hdr, split");
+    DENOISE_CHECK_CLOSE(compare(got_display_split, want_split.display, 4, [](double) { return 1.0 / 255.0; }),
+                        "composite display, split");
+    CHECK(got_hdr_split.at(4, 4, 1) == 0.0);
   }
-  // Two non-finite pixels a frame, four frames; nothing else.
+  // Two non-finite pixels a frame in each of the two composites, four frames; nothing else.
   const auto counts = counters.read();
-  CHECK(counts.zeroed_outputs == 8);
+  CHECK(counts.zeroed_outputs == 16);
   CHECK(counts.clamped_samples == 0);
 }
