@@ -640,6 +640,46 @@ TEST_CASE("denoise passes: add_denoiser refuses a specular signal without its sp
                   std::invalid_argument);
 }
 
+// A spatial chain's temporal result and colour history are RGB9E5 words (R32Uint), the EMA's RGBA16F:
+// the passes that read or write them refuse a mix, or the other format, where they are declared.
+TEST_CASE("denoise passes: temporal, variance and local-mean passes refuse colour images in the wrong format") {
+  ValidatedDevice device;
+  passes::PipelineCache pipelines(*device);
+  RenderGraph g;
+  const auto image = [&g](const char* name, F format) { return g.add_image(name, 8, 8, format); };
+  const auto words = image("words", F::R32Uint), halves = image("halves", F::RGBA16F);
+  passes::TemporalResources t;
+  t.illumination = image("illumination", F::RGBA32F);
+  t.motion = image("motion", F::RGBA16F);
+  t.depth_normal = g.add_image("depth_normal", 8, 8, F::RGBA16Uint, Lifetime::Persistent);
+  t.moments = g.add_image("moments", 8, 8, F::RGBA16F, Lifetime::Persistent);
+  t.counters = g.add_buffer("counters", 16);
+  t.color_history = g.add_image("history.words", 8, 8, F::R32Uint, Lifetime::Persistent);
+  t.integrated = halves;
+  CHECK_THROWS_AS(passes::add_temporal(g, pipelines, t, {}), std::invalid_argument);
+  t.color_history = g.add_image("history.float", 8, 8, F::RGBA32F, Lifetime::Persistent);
+  t.integrated = image("integrated.float", F::RGBA32F);
+  CHECK_THROWS_AS(passes::add_temporal(g, pipelines, t, {}), std::invalid_argument);
+  t.color_history = g.add_image("history.halves", 8, 8, F::RGBA16F, Lifetime::Persistent);
+  t.integrated = halves;
+  CHECK_NOTHROW(passes::add_temporal(g, pipelines, t, {}));
+  const auto albedo = image("albedo", F::RGBA16F);
+  CHECK_THROWS_AS(
+      passes::add_variance(g, pipelines, {halves, t.moments, t.depth_normal, image("cv.1", F::RGBA16F), albedo}, {}),
+      std::invalid_argument);
+  CHECK_NOTHROW(
+      passes::add_variance(g, pipelines, {words, t.moments, t.depth_normal, image("cv.2", F::RGBA16F), albedo}, {}));
+  asvgf::DenoiseSettings settings;
+  settings.local_mean = 3;
+  const auto filtered = image("filtered", F::RGBA16F);
+  CHECK_THROWS_AS(passes::add_local_mean(g, pipelines, {halves, filtered, image("c.1", F::RGBA16F), "lm.1"}, settings),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(passes::add_local_mean(g, pipelines, {words, words, image("c.2", F::RGBA16F), "lm.2"}, settings),
+                  std::invalid_argument);
+  CHECK_NOTHROW(passes::add_local_mean(g, pipelines, {words, filtered, image("c.3", F::RGBA16F), "lm.3"}, settings));
+  CHECK_NOTHROW(passes::add_local_mean(g, pipelines, {words, words, image("c.4", F::R32Uint), "lm.4"}, settings));
+}
+
 // sigma_n 0 and 0.01 besides the default 128: the tap weight's special cases (a normal facing away
 // weighs 0 for any sigma_n > 0, everything 1 for 0), which the shader folds into a clamp and a select.
 TEST_CASE(
