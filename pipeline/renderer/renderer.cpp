@@ -45,8 +45,7 @@ Renderer::Renderer(hal::Device& device, const scene::Scene& scene, const RenderS
   check_denoise_settings(settings);
   set_batches();
   const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
-  targets_.hdr_format = frame::hdr_format(settings.method);
-  targets_.hdr = device.create_image({"hdr", settings.width, settings.height, targets_.hdr_format, usage});
+  create_hdr_target();
   targets_.display = device.create_image({"display", settings.width, settings.height, hal::Format::RGBA8Unorm, usage});
   targets_.ray_counter = device.create_buffer(
       {"ray_counter", 16, hal::BufferUsage::Storage | hal::BufferUsage::CopySrc | hal::BufferUsage::CopyDst});
@@ -54,6 +53,14 @@ Renderer::Renderer(hal::Device& device, const scene::Scene& scene, const RenderS
     targets_.debug =
         device.create_image({"debug_view", settings.width, settings.height, hal::Format::RGBA8Unorm, usage});
   if (settings.aovs) create_aov_targets();
+}
+
+// The radiance image in the format settings_.method writes (frame::hdr_format).
+void Renderer::create_hdr_target() {
+  targets_.hdr_format = frame::hdr_format(settings_.method);
+  targets_.hdr = device_.create_image({"hdr", settings_.width, settings_.height, targets_.hdr_format,
+                                       hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc});
+  targets_.hdr_state = hal::State::Undefined;
 }
 
 void Renderer::create_aov_targets() {
@@ -123,13 +130,10 @@ void Renderer::set_settings(const RenderSettings& s) {
   // Another method's histories hold another quantity, or nothing recent: start afresh.
   if (s.method != settings_.method) runtime_.reset_histories();
   // raw and reference write unclamped RGBA32F radiance, the filtered methods RGBA16F.
-  if (frame::hdr_format(s.method) != targets_.hdr_format) {
+  const bool new_hdr_format = frame::hdr_format(s.method) != targets_.hdr_format;
+  if (new_hdr_format) {
     device_.wait();
     device_.destroy(targets_.hdr);
-    targets_.hdr_format = frame::hdr_format(s.method);
-    const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
-    targets_.hdr = device_.create_image({"hdr", s.width, s.height, targets_.hdr_format, usage});
-    targets_.hdr_state = hal::State::Undefined;
   }
   if (s.debug_view && !targets_.debug) {
     const auto usage = hal::ImageUsage::Storage | hal::ImageUsage::Sampled | hal::ImageUsage::CopySrc;
@@ -137,6 +141,7 @@ void Renderer::set_settings(const RenderSettings& s) {
     targets_.debug_state = hal::State::Undefined;
   }
   settings_ = s;
+  if (new_hdr_format) create_hdr_target();
   set_batches();
   if (s.aovs && !targets_.aovs) create_aov_targets();
   if (!s.aovs) destroy_aov_targets();

@@ -92,6 +92,7 @@ class Renderer {
   std::uint32_t batches_ = 1, batch_spp_ = 1;
   int last_frame_ = -1;
   void set_batches();
+  void create_hdr_target();
   void create_aov_targets();
   void destroy_aov_targets();
   AovImages read_aovs(bool gradient_ran);
