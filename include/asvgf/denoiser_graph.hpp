@@ -64,7 +64,8 @@ struct GraphDenoiserInputs {
 struct GraphDenoiserOutputs {
   graph::ResourceId filtered = 0;  // what composite modulated: the last a-trous output, the EMA, or the input
   std::optional<graph::ResourceId> gradient;  // reconstructed (delta^, Delta^), when the gradient passes run
-  std::optional<graph::ResourceId> moments;   // persistent RGBA16F (E[l], sqrt(Var[l]), n)
+  // Persistent R32Uint: E[l], sqrt(Var[l]) and n in one word (shaders/common/denoise.glsl: pack_moments).
+  std::optional<graph::ResourceId> moments;
   // The temporal pass's output and the persistent colour history: with a-trous iterations R32Uint,
   // RGB9E5 words (rgb: Vulkan's E5B9G9R9 layout); the EMA's RGBA16F (rgb, temporal variance).
   std::optional<graph::ResourceId> integrated;

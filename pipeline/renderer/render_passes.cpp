@@ -235,7 +235,8 @@ void add_accumulate(graph::RenderGraph& graph, PipelineCache& pipelines, graph::
 
 void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const DebugViewInputs& in, DebugView view,
                     std::uint32_t width, std::uint32_t height) {
-  // Buffers the method lacks are bound to the noisy input (always there) and flagged unavailable.
+  // Images the method lacks are bound to an input of the same kind that is always there (the moments,
+  // R32Uint words, to the unsigned depth_normal; the others to the noisy input) and flagged unavailable.
   const std::uint32_t available = (in.gradient ? 1u : 0u) | (in.moments ? 2u : 0u) | (in.variance ? 4u : 0u);
   const DebugViewParams params{width,
                                height,
@@ -251,7 +252,7 @@ void add_debug_view(graph::RenderGraph& graph, PipelineCache& pipelines, const D
                     {"albedo", in.albedo},
                     {"illumination", in.illumination},
                     {"gradient", in.gradient.value_or(in.illumination)},
-                    {"moments", in.moments.value_or(in.illumination)},
+                    {"moments", in.moments.value_or(in.depth_normal)},
                     {"variance", in.variance.value_or(in.illumination)},
                     {"debug_view", in.target}},
                    to_bytes(params), {width, height, 1});

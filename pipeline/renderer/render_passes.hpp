@@ -123,7 +123,7 @@ enum class DebugView : std::uint32_t {
 struct DebugViewInputs {
   graph::ResourceId depth_normal, motion, albedo, illumination, target;
   std::optional<graph::ResourceId> gradient;  // 1/3 res (delta^, Delta^), when the gradient ran this frame
-  std::optional<graph::ResourceId> moments;   // temporal's output (E[l], sqrt(Var[l]), n)
+  std::optional<graph::ResourceId> moments;   // temporal's output: R32Uint words (E[l], sqrt(Var[l]), n)
   std::optional<graph::ResourceId> variance;  // colour with variance in .a (variance pass, or temporal's)
   DenoiseSettings denoise;                    // what the temporal pass used (alpha, history cap)
 };

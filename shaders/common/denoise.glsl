@@ -6,6 +6,7 @@
 
 #include "common/color.glsl"
 #include "common/depth_normal.glsl"
+#include "common/random.glsl"
 
 // A pixel's surface: linear view depth (0 = no hit), max(|dz/dx|, |dz/dy|), unit normal.
 struct Surface {
@@ -17,17 +18,52 @@ struct Surface {
 Surface surface_from(uvec4 t) { return Surface(depth_normal_depth(t), depth_normal_gradient(t), depth_normal_normal(t)); }
 bool hit(Surface s) { return s.z > 0.0; }
 
-// The luminance moments as the temporal pass stores them, RGBA16F (E[l], sqrt(Var[l]), n, 0): 8
-// bytes a pixel instead of RGBA32F's 16. fp16 cannot hold E[l^2] above l = 256, but it holds the
-// standard deviation of any luminance the clamped samples can have (<= fp16 max / 2). The passes
-// blend the mean and the variance (Chan et al.'s update, below), so a converged pixel's variance
-// is not E[l^2] - E[l]^2's difference of two large numbers.
+// The luminance moments and the history length as the temporal pass stores them, one R32UI word a
+// pixel (4 bytes instead of RGBA16F's 8; GLES 3.1 stores no rg16f or r16f), written and read
+// bilinearly once a frame and read by the variance estimate:
+//   bits  0-14  E[l]: the bits of its half float without the sign (E[l] >= 0), rounded to nearest
+//   bits 15-23  sqrt(Var[l]): the top 9 of its half's 15 bits (5 exponent, 4 mantissa bits), rounded to
+//               nearest: within 1/32 relative. The standard deviation only scales edge-stopping
+//               weights and the next frame's blend, where that is far below the sample's own noise.
+//   bits 24-31  n: 0 (no history) or 1 + its 4 exponent and 4 mantissa bits for n in [1, 61440]:
+//               within 1/32 relative, integers exact to 32 (the default history_cap), fractions
+//               kept below. Above 32 a step is more than one frame, so the rounding there is
+//               stochastic (`n_rounding`): n + 1 grows by one on average instead of sticking.
+// fp16 cannot hold E[l^2] above l = 256, but it holds the standard deviation of any luminance the
+// clamped samples can have (<= fp16 max / 2). The passes blend the mean and the variance (Chan et
+// al.'s update, below), so a converged pixel's variance is not E[l^2] - E[l]^2's difference of two
+// large numbers. CPU twin: tests/pipeline/denoise_harness.hpp's pack_moments.
 struct Moments {
   float mean;
   float variance;
 };
 Moments moments_from_stored(vec2 stored) { return Moments(stored.x, stored.y * stored.y); }
 vec2 moments_to_stored(Moments m) { return vec2(m.mean, sqrt(max(0.0, m.variance))); }
+// (E[l], sqrt(Var[l]), n) from the word.
+vec3 unpack_moments(uint word) {
+  const float mean = unpackHalf2x16(word & 0x7fffu).x;
+  const float std_dev = unpackHalf2x16(((word >> 15) & 0x1ffu) << 6).x;
+  const uint code = word >> 24;
+  const float n = code == 0u ? 0.0 : uintBitsToFloat(((code - 1u) << 19) + (127u << 23));
+  return vec3(mean, std_dev, n);
+}
+// The word for stored = moments_to_stored(m) (finite) and n; n's last kept bit is rounded up where
+// its dropped bits exceed 1 - rounding (0.5: to nearest).
+uint pack_moments(vec2 stored, float n, float rounding) {
+  const uint mean = packHalf2x16(vec2(round_to_half(clamp(stored.x, 0.0, kFp16Max)), 0.0)) & 0x7fffu;
+  const uint sd_half = packHalf2x16(vec2(round_to_half(clamp(stored.y, 0.0, kFp16Max)), 0.0)) & 0x7fffu;
+  // Ties to even on the bits; 0x1ef is the largest finite 9-bit pattern (0x7c00 >> 6 would be Inf).
+  const uint sd = min((sd_half + 0x1fu + ((sd_half >> 6) & 1u)) >> 6, 0x1efu);
+  uint code = 0u;
+  if (n > 0.0) {
+    const uint bits = floatBitsToUint(clamp(n, 1.0, 61440.0)) - (127u << 23);
+    code = min((bits + uint(rounding * 524288.0)) >> 19, 254u) + 1u;
+  }
+  return mean | (sd << 15) | (code << 24);
+}
+// Where n's kept bits step by more than one frame (n >= 32), a stochastic rounding of it from a
+// hash; below, to nearest. Deterministic: the same pixel and sample give the same rounding.
+float n_rounding(float n, uint seed) { return n >= 32.0 ? float(pcg_hash(seed) >> 8) * (1.0 / 16777216.0) : 0.5; }
 // (1 - a) history + a sample, as distributions: the mean moves by a d and the variance is
 // (1 - a) (Var_h + a d^2), d = l - mean_h (exact; no cancellation).
 Moments blend_moments(Moments h, float l, float a) {

@@ -2,7 +2,7 @@
 // pass's colour and moments, for the variance pass (denoise/variance.comp) and for the first a-trous
 // iteration that estimates it while loading its tile (denoise/atrous.comp, FUSED_VARIANCE). The
 // including shader declares `params` (width, height, sigma_z, sigma_n, sigma_l, min_history) and the
-// textures `integrated` (R32UI: RGB9E5 words, common/color.glsl), `moments` (E[l], sqrt(Var[l]), n),
+// textures `integrated` (R32UI: RGB9E5 words, common/color.glsl), `moments` (R32UI: E[l], sqrt(Var[l]) and n in one word, common/denoise.glsl's pack_moments),
 // `depth_normal` and `albedo` (what the signal is re-modulated by). With at least min_history
 // frames of history: the temporal estimate Var[l]; with less, a 7x7 edge-aware spatial estimate of the moments (and of the colour), boosted
 // by min_history / n as in Falcor's SVGF, except that with one frame of history the moments are
@@ -20,7 +20,7 @@ vec3 integrated_color(ivec2 q) { return unpack_rgb9e5(texelFetch(integrated, q, 
 // Colour and variance of pixel p (inside the image) with surface `center`, clamped to fp16's range.
 vec4 estimate_color_variance(ivec2 p, Surface center) {
   vec3 color = integrated_color(p);
-  vec3 mn = texelFetch(moments, p, 0).xyz;
+  vec3 mn = unpack_moments(texelFetch(moments, p, 0).x);
   Moments m = moments_from_stored(mn.xy);
   float n = mn.z;
   float variance = m.variance;
@@ -43,7 +43,7 @@ vec4 estimate_color_variance(ivec2 p, Surface center) {
         if (dx != 0 || dy != 0) {
           ivec2 q = p + ivec2(dx, dy);
           if (q.x < 0 || q.y < 0 || !inside(q, params.width, params.height)) continue;
-          vec3 other_m = texelFetch(moments, q, 0).xyz;
+          vec3 other_m = unpack_moments(texelFetch(moments, q, 0).x);
           if (!(other_m.z > 0.0)) continue;  // a neighbour without history is not part of the estimate
           mq = moments_from_stored(other_m.xy);
           cq = integrated_color(q);

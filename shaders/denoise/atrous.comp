@@ -82,7 +82,7 @@ layout(set = 0, binding = 1, std430) readonly buffer ColorIn { uvec2 texels[]; }
 layout(set = 0, binding = 5, std430) readonly buffer SurfaceIn { uvec2 texels[]; } surface;
 #elif defined(FIRST_PACKED)
 layout(set = 0, binding = 1) uniform utexture2D integrated;  // the temporal result's colour, RGB9E5 words
-layout(set = 0, binding = 6) uniform texture2D moments;     // E[l], sqrt(Var[l]), history length
+layout(set = 0, binding = 6) uniform utexture2D moments;    // E[l], sqrt(Var[l]), history length: pack_moments
 #else
 layout(set = 0, binding = 1) uniform texture2D color_in;  // rgb colour, a variance
 #endif

@@ -45,7 +45,7 @@ layout(set = 0, binding = 5) uniform utexture2D prev_color;
 #else
 layout(set = 0, binding = 5) uniform texture2D prev_color;
 #endif
-layout(set = 0, binding = 6) uniform texture2D prev_moments;
+layout(set = 0, binding = 6) uniform utexture2D prev_moments;  // common/denoise.glsl: pack_moments
 #ifdef ADAPTIVE
 layout(set = 0, binding = 8) uniform texture2D gradient;
 #endif
@@ -54,9 +54,8 @@ layout(set = 0, binding = 9, r32ui) writeonly uniform uimage2D integrated;  // r
 #else
 layout(set = 0, binding = 9, rgba16f) writeonly uniform image2D integrated;  // rgb, the temporal variance
 #endif
-// E[l], sqrt(Var[l]) and the history length n (common/denoise.glsl: moments_to_stored); four
-// channels because GLES 3.1 (ESSL target) can store neither rg16f nor r16f.
-layout(set = 0, binding = 10, rgba16f) writeonly uniform image2D moments;
+// E[l], sqrt(Var[l]) and the history length n in one word (common/denoise.glsl: pack_moments).
+layout(set = 0, binding = 10, r32ui) writeonly uniform uimage2D moments;
 // Since the buffer was cleared: samples dropped with a NaN component, with an Inf (no NaN), finite
 // samples clamped to the fp16 maximum, and output pixels composite wrote as 0 (SanitizeCounters).
 layout(set = 0, binding = 11) buffer Counters {
@@ -97,7 +96,7 @@ History reproject(ivec2 p, Surface cur) {
       ivec2 q = b + o;
       float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
       if (q.x >= 0 && q.y >= 0 && inside(q, params.width, params.height) && w > 0.0) {
-        vec4 mq = texelFetch(prev_moments, q, 0);
+        vec3 mq = unpack_moments(texelFetch(prev_moments, q, 0).x);
         Surface before = surface_from(texelFetch(prev_depth_normal, q, 0));
 #ifdef VIRTUAL_MOTION
         // Moved through a reflection's virtual point (motion.z = 1, specular_motion.comp), the
@@ -189,5 +188,6 @@ void main() {
 #else
   imageStore(integrated, p, round_to_half_clamped(clamp_fp16(vec4(color, m.variance))));
 #endif
-  imageStore(moments, p, round_to_half_clamped(vec4(moments_to_stored(m), n, 0.0)));
+  const uint seed = uint(p.y) * params.width + uint(p.x) + floatBitsToUint(sample_rgb.g);
+  imageStore(moments, p, uvec4(pack_moments(moments_to_stored(m), n, n_rounding(n, seed)), 0u, 0u, 0u));
 }

@@ -23,7 +23,7 @@ layout(set = 0, binding = 0) uniform Params {
   float min_history;  // SVGF: 4
 } params;
 layout(set = 0, binding = 1) uniform utexture2D integrated;  // RGB9E5 words (temporal.comp's COLOR_RGB9E5)
-layout(set = 0, binding = 2) uniform texture2D moments;  // E[l], sqrt(Var[l]), history length
+layout(set = 0, binding = 2) uniform utexture2D moments;  // E[l], sqrt(Var[l]), history length: pack_moments
 layout(set = 0, binding = 3) uniform utexture2D depth_normal;
 layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_variance;
 layout(set = 0, binding = 5) uniform texture2D albedo;  // what the signal is re-modulated by

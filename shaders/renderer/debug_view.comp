@@ -30,7 +30,7 @@ layout(set = 0, binding = 3) uniform texture2D albedo;
 layout(set = 0, binding = 4) uniform texture2D illumination;
 layout(set = 0, binding = 5, rgba8) writeonly uniform image2D debug_view;
 layout(set = 0, binding = 6) uniform texture2D gradient;
-layout(set = 0, binding = 7) uniform texture2D moments;
+layout(set = 0, binding = 7) uniform utexture2D moments;  // common/denoise.glsl: pack_moments
 layout(set = 0, binding = 8) uniform texture2D variance;
 
 vec3 heat(float t) {
@@ -65,7 +65,7 @@ void main() {
     c = heat(gradient_lambda(p));
   } else if (params.mode == 6u) {
     if ((params.available & 2u) != 0u) {
-      float n = texelFetch(moments, p, 0).z;
+      float n = unpack_moments(texelFetch(moments, p, 0).x).z;
       float lambda = gradient_lambda(p);
       c = heat(n > 0.0 ? max((1.0 - lambda) * params.alpha + lambda, 1.0 / n) : 1.0);
     }
@@ -75,7 +75,7 @@ void main() {
       c = heat(s / (1.0 + s));
     }
   } else {
-    if ((params.available & 2u) != 0u) c = heat(texelFetch(moments, p, 0).z / max(params.history_cap, 1.0));
+    if ((params.available & 2u) != 0u) c = heat(unpack_moments(texelFetch(moments, p, 0).x).z / max(params.history_cap, 1.0));
   }
   imageStore(debug_view, p, vec4(c, 1.0));
 }

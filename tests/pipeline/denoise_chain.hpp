@@ -65,6 +65,7 @@ class DenoiserChain {
       result.color_history = rgb9e5_values(result.color_history);
     if (spatial && g.resource(*out.integrated).format == Format::R32Uint)
       result.integrated = rgb9e5_values(result.integrated);
+    result.moments = moments_values(result.moments);  // pack_moments's words
     return result;
   }
 

@@ -284,6 +284,55 @@ inline ImageD random_color(Random& r, int w, int h, double lo, double hi, double
   return img;
 }
 
+// ---- The moments word (shaders/common/denoise.glsl: pack_moments) ------------------------------
+// pack_moments's word for (E[l], sqrt(Var[l]), n); `rounding` 0.5 rounds n to nearest, as the
+// temporal pass does below n = 32.
+inline std::uint32_t pack_moments(double mean, double std_dev, double n, double rounding = 0.5) {
+  const auto half_bits = [](double v) {
+    return static_cast<std::uint32_t>(float_to_half(static_cast<float>(std::clamp(v, 0.0, 65504.0)))) & 0x7fffu;
+  };
+  const std::uint32_t sd_half = half_bits(std_dev);
+  const std::uint32_t sd = std::min((sd_half + 0x1fu + ((sd_half >> 6) & 1u)) >> 6, 0x1efu);
+  std::uint32_t code = 0;
+  if (n > 0) {
+    const std::uint32_t bits =
+        std::bit_cast<std::uint32_t>(static_cast<float>(std::clamp(n, 1.0, 61440.0))) - (127u << 23);
+    code = std::min((bits + static_cast<std::uint32_t>(rounding * 524288.0)) >> 19, 254u) + 1u;
+  }
+  return half_bits(mean) | (sd << 15) | (code << 24);
+}
+// What a word holds: (E[l], sqrt(Var[l]), n).
+inline std::array<double, 3> unpack_moments(std::uint32_t word) {
+  const std::uint32_t code = word >> 24;
+  return {half_to_float(static_cast<std::uint16_t>(word & 0x7fffu)),
+          half_to_float(static_cast<std::uint16_t>(((word >> 15) & 0x1ffu) << 6)),
+          code == 0 ? 0.0 : std::bit_cast<float>(((code - 1u) << 19) + (127u << 23))};
+}
+// Moments images (E[l], sqrt(Var[l]), n, -) as words (one channel) and words as what they hold.
+inline ImageD moments_words(const ImageD& moments) {
+  ImageD out(moments.width, moments.height, 1);
+  for (int y = 0; y < moments.height; ++y)
+    for (int x = 0; x < moments.width; ++x)
+      out.at(x, y, 0) = pack_moments(moments.at(x, y, 0), moments.at(x, y, 1), moments.at(x, y, 2));
+  return out;
+}
+inline ImageD moments_values(const ImageD& words) {
+  ImageD out(words.width, words.height, 4);
+  for (int y = 0; y < words.height; ++y)
+    for (int x = 0; x < words.width; ++x) {
+      const auto m = unpack_moments(static_cast<std::uint32_t>(words.at(x, y, 0)));
+      for (int c = 0; c < 3; ++c) out.at(x, y, c) = m[static_cast<std::size_t>(c)];
+    }
+  return out;
+}
+// The largest error the word's rounding of a standard deviation or a history length of magnitude v
+// makes: half a step of its 4 mantissa bits (after the standard deviation's fp16 rounding).
+inline double moments_word_rounding(double v) {
+  const double a = std::abs(v);
+  if (a < std::ldexp(1.0, -14)) return std::ldexp(1.0, -19) + fp16_ulp(a);
+  return std::ldexp(1.0, static_cast<int>(std::floor(std::log2(a))) - 5) + fp16_ulp(a);
+}
+
 // Moments as the temporal pass stores them (E[l], sqrt(Var[l]), history length n): lengths of 0 (no
 // history), below SVGF's min_history of 4 (the spatial variance estimate) and above.
 inline ImageD random_moments(Random& r, int w, int h) {
@@ -329,13 +378,16 @@ inline Compare compare(const ImageD& got, const ImageD& want, int channels,
                        const std::function<double(double)>& tolerance) {
   return compare(got, want, channels, [&tolerance](double w, int) { return tolerance(w); });
 }
-// Stored moments (E[l], sqrt(Var[l]), n; RGBA16F) against a reference's: the mean and n within one
-// fp16 store plus 1e-5 magnitude; the standard deviation within one fp16 store plus what a variance
-// error of 1e-5 variance_magnitude (fp32 arithmetic on values that large) makes of a square root.
+// Stored moments (the values of pack_moments's words: E[l], sqrt(Var[l]), n) against a reference's:
+// the mean within one fp16 store plus 1e-5 magnitude; the standard deviation within the word's
+// rounding plus what a variance error of 1e-5 variance_magnitude (fp32 arithmetic on values that
+// large) makes of a square root; n within the word's rounding plus 1e-5 magnitude.
 inline Compare compare_moments(const ImageD& got, const ImageD& want, double magnitude, double variance_magnitude) {
   const double dv = 1e-5 * variance_magnitude;
   return compare(got, want, 3, [=](double w, int c) {
-    return fp16_ulp(w) + (c == 1 ? 2 * dv / (std::abs(w) + std::sqrt(dv)) : 1e-5 * magnitude);
+    if (c == 0) return fp16_ulp(w) + 1e-5 * magnitude;
+    if (c == 1) return moments_word_rounding(w) + 2 * dv / (std::abs(w) + std::sqrt(dv));
+    return moments_word_rounding(w) + 1e-5 * magnitude;
   });
 }
 #define DENOISE_CHECK_CLOSE(result, what)                                                                          \

@@ -476,11 +476,11 @@ TEST_CASE(
         RenderGraph g;
         const auto dn = g.add_image("depth_normal", uw, uh, F::RGBA16Uint, Lifetime::Persistent);
         const auto color = g.add_image("color_history", uw, uh, color_format, Lifetime::Persistent);
-        const auto mom = g.add_image("moments", uw, uh, F::RGBA16F, Lifetime::Persistent);
+        const auto mom = g.add_image("moments", uw, uh, F::R32Uint, Lifetime::Persistent);
         if (frame == 0) {
           harness.fill(g, dn, depth_normal_texels(c.prev_dn));
           harness.fill(g, color, words ? rgb9e5_words(c.prev_color) : c.prev_color);
-          harness.fill(g, mom, c.prev_moments);
+          harness.fill(g, mom, moments_words(c.prev_moments));
         } else {
           harness.fill(g, dn, depth_normal_texels(c.dn));
           passes::TemporalResources res;
@@ -501,7 +501,7 @@ TEST_CASE(
       const ImageD illumination = quantize(c.illumination, F::RGBA32F), motion = quantize(c.motion, F::RG32F);
       const ImageD dn = quantize(c.dn, F::RGBA32F), prev_dn = quantize(c.prev_dn, F::RGBA32F);
       const ImageD prev_color = words ? rgb9e5_values(rgb9e5_words(c.prev_color)) : quantize(c.prev_color, F::RGBA16F);
-      const ImageD prev_moments = quantize(c.prev_moments, F::RGBA16F);
+      const ImageD prev_moments = moments_values(moments_words(c.prev_moments));
       const ImageD gradient = quantize(c.gradient, F::RGBA16F);
       ref::TemporalInputs in{
           &illumination, &motion, &dn, &prev_dn, &prev_color, &prev_moments, adaptive ? &gradient : nullptr};
@@ -515,7 +515,8 @@ TEST_CASE(
         DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 3, fp16_tolerance(4)), "temporal colour");
         DENOISE_CHECK_CLOSE(compare(integrated, want.integrated, 4, fp16_tolerance(20)), "temporal variance");
       }
-      DENOISE_CHECK_CLOSE(compare_moments(moments, want.moments, 40, 20), "temporal moments and length");
+      DENOISE_CHECK_CLOSE(compare_moments(moments_values(moments), want.moments, 40, 20),
+                          "temporal moments and length");
       const auto counts = counters.read();
       CHECK(counts.nan_samples == want.nan_samples);
       CHECK(counts.inf_samples == want.inf_samples);
@@ -535,7 +536,7 @@ TEST_CASE(
 namespace {
 
 // The variance pass on these inputs (integrated as RGB9E5 words, as a spatial chain keeps it,
-// moments and albedo as RGBA16F, depth_normal as its texels), read back.
+// moments as pack_moments's words, albedo as RGBA16F, depth_normal as its texels), read back.
 ImageD run_variance(hal::Device& device, passes::PipelineCache& pipelines, const ImageD& integrated,
                     const ImageD& moments, const ImageD& dn, const ImageD& albedo,
                     const asvgf::DenoiseSettings& settings) {
@@ -545,7 +546,7 @@ ImageD run_variance(hal::Device& device, passes::PipelineCache& pipelines, const
                                static_cast<std::uint32_t>(integrated.height), F::RGBA16F);
   passes::add_variance(g, pipelines,
                        {harness.input(g, "integrated", rgb9e5_words(integrated), F::R32Uint),
-                        harness.input(g, "moments", moments, F::RGBA16F),
+                        harness.input(g, "moments", moments_words(moments), F::R32Uint),
                         harness.input(g, "depth_normal", depth_normal_texels(dn), F::RGBA16Uint), out,
                         harness.input(g, "albedo", albedo, F::RGBA16F)},
                        settings);
@@ -571,7 +572,7 @@ TEST_CASE("denoise passes: variance pass matches the CPU reference (temporal and
     const ImageD albedo = random_color(r, w, h, 0.05, 1, 1);  // textured: a different albedo at every pixel
     const ImageD got = run_variance(*device, pipelines, integrated, moments, dn, albedo, settings);
     const ImageD want = ref::variance(
-        rgb9e5_values(rgb9e5_words(integrated)), quantize(moments, F::RGBA16F), quantize(dn, F::RGBA32F),
+        rgb9e5_values(rgb9e5_words(integrated)), moments_values(moments_words(moments)), quantize(dn, F::RGBA32F),
         quantize(albedo, F::RGBA16F),
         {settings.sigma_z, settings.sigma_n,
          asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height)), settings.min_history});
@@ -640,9 +641,11 @@ TEST_CASE("denoise passes: add_denoiser refuses a specular signal without its sp
                   std::invalid_argument);
 }
 
-// A spatial chain's temporal result and colour history are RGB9E5 words (R32Uint), the EMA's RGBA16F:
-// the passes that read or write them refuse a mix, or the other format, where they are declared.
-TEST_CASE("denoise passes: temporal, variance and local-mean passes refuse colour images in the wrong format") {
+// A spatial chain's temporal result and colour history are RGB9E5 words (R32Uint), the EMA's RGBA16F,
+// and the moments are pack_moments's words (R32Uint): the passes that read or write them refuse a
+// mix, or another format, where they are declared.
+TEST_CASE(
+    "denoise passes: temporal, variance and local-mean passes refuse colour images and moments in the wrong format") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   RenderGraph g;
@@ -652,7 +655,7 @@ TEST_CASE("denoise passes: temporal, variance and local-mean passes refuse colou
   t.illumination = image("illumination", F::RGBA32F);
   t.motion = image("motion", F::RGBA16F);
   t.depth_normal = g.add_image("depth_normal", 8, 8, F::RGBA16Uint, Lifetime::Persistent);
-  t.moments = g.add_image("moments", 8, 8, F::RGBA16F, Lifetime::Persistent);
+  t.moments = g.add_image("moments", 8, 8, F::R32Uint, Lifetime::Persistent);
   t.counters = g.add_buffer("counters", 16);
   t.color_history = g.add_image("history.words", 8, 8, F::R32Uint, Lifetime::Persistent);
   t.integrated = halves;
@@ -662,11 +665,19 @@ TEST_CASE("denoise passes: temporal, variance and local-mean passes refuse colou
   CHECK_THROWS_AS(passes::add_temporal(g, pipelines, t, {}), std::invalid_argument);
   t.color_history = g.add_image("history.halves", 8, 8, F::RGBA16F, Lifetime::Persistent);
   t.integrated = halves;
+  const auto moments = t.moments;
+  const auto moments_halves = g.add_image("moments.halves", 8, 8, F::RGBA16F, Lifetime::Persistent);
+  t.moments = moments_halves;
+  CHECK_THROWS_AS(passes::add_temporal(g, pipelines, t, {}), std::invalid_argument);
+  t.moments = moments;
   CHECK_NOTHROW(passes::add_temporal(g, pipelines, t, {}));
   const auto albedo = image("albedo", F::RGBA16F);
   CHECK_THROWS_AS(
       passes::add_variance(g, pipelines, {halves, t.moments, t.depth_normal, image("cv.1", F::RGBA16F), albedo}, {}),
       std::invalid_argument);
+  CHECK_THROWS_AS(passes::add_variance(g, pipelines,
+                                       {words, moments_halves, t.depth_normal, image("cv.3", F::RGBA16F), albedo}, {}),
+                  std::invalid_argument);
   CHECK_NOTHROW(
       passes::add_variance(g, pipelines, {words, t.moments, t.depth_normal, image("cv.2", F::RGBA16F), albedo}, {}));
   asvgf::DenoiseSettings settings;
@@ -788,7 +799,7 @@ TEST_CASE(
     passes::add_atrous(
         g, pipelines,
         {harness.input(g, "integrated", rgb9e5_words(color), F::R32Uint), dn_in, first, history_first, "", surface,
-         passes::VarianceEstimateInputs{harness.input(g, "moments", moments, F::RGBA16F),
+         passes::VarianceEstimateInputs{harness.input(g, "moments", moments_words(moments), F::R32Uint),
                                         harness.input(g, "estimate_albedo", estimate_albedo, F::RGBA16F)}},
         0, settings);
     passes::add_atrous(g, pipelines, {first, dn_in, middle, history, "", surface}, 1, settings);
@@ -847,7 +858,8 @@ TEST_CASE(
     // pass's image would be, it put the variance channel at 0.98 of the tolerance on these images
     // and past it (1.02) on others, against 0.31-0.45 unrounded.
     const ImageD color_variance = ref::variance(
-        rgb9e5_values(rgb9e5_words(color)), quantize(moments, F::RGBA16F), dn_q, quantize(estimate_albedo, F::RGBA16F),
+        rgb9e5_values(rgb9e5_words(color)), moments_values(moments_words(moments)), dn_q,
+        quantize(estimate_albedo, F::RGBA16F),
         {settings.sigma_z, settings.sigma_n,
          asvgf::luminance_sigma(settings, std::uint32_t(dn.width), std::uint32_t(dn.height)), settings.min_history});
     DENOISE_CHECK_CLOSE(compare(t1.color, ref::atrous(color_variance, dn_q, params(0)), 4, fp16_tolerance(80)),
@@ -911,7 +923,7 @@ TEST_CASE(
   RenderGraph g;
   const auto img = g.add_image("color_in", 8, 8, F::RGBA16F), dn = g.add_image("depth_normal", 8, 8, F::RGBA16Uint);
   const auto alb = g.add_image("albedo", 8, 8, F::RGBA16F);
-  const passes::VarianceEstimateInputs mom{g.add_image("moments", 8, 8, F::RGBA16F), alb};
+  const passes::VarianceEstimateInputs mom{g.add_image("moments", 8, 8, F::R32Uint), alb};
   // The first packed iteration's temporal result: RGB9E5 words, as a spatial chain keeps it.
   const auto words = g.add_image("integrated", 8, 8, F::R32Uint);
   const auto packed = [&](const char* name, std::uint64_t bytes) { return g.add_buffer(name, bytes); };
@@ -949,13 +961,20 @@ TEST_CASE(
   CHECK_THROWS_AS(
       passes::add_atrous(g, pipelines,
                          {words, dn, packed("narrow_moments", 8 * 8 * 8), std::nullopt, "", surface,
-                          passes::VarianceEstimateInputs{g.add_image("moments.small", 7, 8, F::RGBA16F), alb}},
+                          passes::VarianceEstimateInputs{g.add_image("moments.small", 7, 8, F::R32Uint), alb}},
                          0, settings),
       std::invalid_argument);
   CHECK_THROWS_AS(
       passes::add_atrous(g, pipelines,
                          {words, dn, packed("narrow_albedo", 8 * 8 * 8), std::nullopt, "", surface,
                           passes::VarianceEstimateInputs{mom.moments, g.add_image("albedo.small", 8, 7, F::RGBA16F)}},
+                         0, settings),
+      std::invalid_argument);
+  // The moments as RGBA16F (not pack_moments's words).
+  CHECK_THROWS_AS(
+      passes::add_atrous(g, pipelines,
+                         {words, dn, packed("halves_moments", 8 * 8 * 8), std::nullopt, "", surface,
+                          passes::VarianceEstimateInputs{g.add_image("moments.halves", 8, 8, F::RGBA16F), alb}},
                          0, settings),
       std::invalid_argument);
   CHECK_NOTHROW(passes::add_atrous(g, pipelines, {words, dn, packed("fits", 8 * 8 * 8), std::nullopt, "", surface, mom},
@@ -1143,14 +1162,15 @@ TEST_CASE(
       const auto history = g.add_image("color_history", uw, uh, F::R32Uint, Lifetime::Persistent);
       const auto history_sums = passes::add_local_mean_sums_image(g, "history", uw, uh, k);
       const auto display_sums = passes::add_local_mean_sums_image(g, "display", uw, uh, k);
-      passes::AtrousResources a1{integrated,
-                                 dn_in,
-                                 first,
-                                 history,
-                                 "",
-                                 surface,
-                                 passes::VarianceEstimateInputs{harness.input(g, "moments", moments, F::RGBA16F),
-                                                                harness.input(g, "albedo", albedo, F::RGBA16F)}};
+      passes::AtrousResources a1{
+          integrated,
+          dn_in,
+          first,
+          history,
+          "",
+          surface,
+          passes::VarianceEstimateInputs{harness.input(g, "moments", moments_words(moments), F::R32Uint),
+                                         harness.input(g, "albedo", albedo, F::RGBA16F)}};
       a1.local_mean_sums = {history_sums, std::nullopt, block};
       passes::add_atrous(g, pipelines, a1, 0, settings);
       // The same first iteration without the history tap (the variant the default graph runs, whose

@@ -2,7 +2,7 @@
 # The measurements issues 36, 37 and 39 need on the H200, in one device call (prepare.sh first):
 #   bash tools/device/measure.sh [bench] [glossy] [glossy-maps] [static] [light-exit] [orbit] [sigma] [local-mean] [local-mean-report]
 #                                [local-mean-cost] [local-mean-default]
-#                                [gl-composite] [vk-occupancy] [atrous] [atrous-quality] [glossy-probe] [ab]
+#                                [gl-composite] [vk-occupancy] [atrous] [atrous-quality] [glossy-probe] [ab] [iterations]
 # (no step: bench glossy static). Each step has a time limit and its results go to
 # $OUT/reports.tgz as soon as it ends, so that a run cut short still returns what it measured.
 #   bench       asvgf bench at 1080p: Vulkan (ASVGF_VK_PIPELINE_STATS), OpenGL (ASVGF_GL_PROGRAM_DUMP), ES
@@ -38,6 +38,8 @@
 #               .devbin/asvgf_atrous_* (the issue-36 quality check of the atrous step's probes)
 #   glossy-probe  report glossy/boxes-move and glossy/orbit (or $GLOSSY_PROBE_ANIMATIONS), 12 frames, one
 #               signal and the split, for this build and every .devbin/asvgf_glossy_* (build_probes.sh glossy)
+#   iterations  5 a-trous iterations (the default) against 4 and 3: the bench (Vulkan and OpenGL 1080p,
+#               Vulkan 4K) and the quality at 1080p (light-exit with two seeds, glossy boxes-move and orbit)
 #   ab          this build against another (.devbin/asvgf_base: `cp` a stripped binary of the commit
 #               before there): the bench twice each, alternately, on each backend in $AB_BACKENDS
 #               (default vulkan; e.g. "vulkan gl"; none with AB_NO_BENCH=1), Vulkan at 4K once each with
@@ -334,6 +336,35 @@ EOF_PY
       for bin in $B $A; do
         timeout 200 $bin report "${HD[@]}" --methods asvgf --out $R/ab-$(basename $bin) --quiet 2>&1 | tail -1
         grep -h "^| \`asvgf\`" $R/ab-$(basename $bin)/report.md | head -1
+        save
+      done ;;
+    iterations)
+      # Issue 36's lead: 5 a-trous iterations (the default) against 4 and 3. The bench twice each,
+      # alternately, Vulkan 1080p; OpenGL 1080p and Vulkan 4K once each; then the quality check at
+      # 1080p: light-exit (24 frames, seeds 0 and 1: the lag can flip with the seed), glossy
+      # boxes-move and orbit (12 frames).
+      for round in 1 2; do
+        for it in 5 4 3; do
+          echo "-- vulkan it$it round $round"
+          timeout 60 $A bench "${BENCH[@]}" --atrous-iterations $it 2>&1 | grep -E "^(atrous|denoiser|frame)"
+        done
+      done | tee $R/it-bench.txt
+      for it in 5 4; do
+        echo "-- gl it$it"
+        timeout 60 $A bench "${BENCH[@]}" --atrous-iterations $it --backend gl 2>&1 | grep -E "^(denoiser|frame)"
+        echo "-- vulkan 4K it$it"
+        timeout 90 $A bench "${BENCH[@]/#$size/${MEASURE_SIZE_4K:-3840x2160}}" --atrous-iterations $it 2>&1 |
+          grep -E "^(denoiser|frame)"
+      done | tee -a $R/it-bench.txt
+      save
+      IT=(--methods asvgf --run 'it4=asvgf --atrous-iterations 4' --run 'it3=asvgf --atrous-iterations 3')
+      for seed in 0 1; do
+        timeout 200 $A report "${HD[@]}" "${IT[@]}" --seed $seed --out $R/it-light-exit-s$seed --quiet 2>&1 | tail -1
+        save
+      done
+      for anim in boxes-move orbit; do
+        timeout 150 $A report --scene glossy --animation $anim "${HD[@]}" --frames 12 "${IT[@]}" \
+          --out $R/it-glossy-$anim --quiet 2>&1 | tail -1
         save
       done ;;
     *) echo "measure.sh: unknown step '$step'" >&2; exit 2 ;;

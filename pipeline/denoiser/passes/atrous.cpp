@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "denoiser/passes/temporal.hpp"
 #include "shaders/atrous.first.hpp"
 #include "shaders/atrous.first_history.hpp"
 #include "shaders/atrous.first_history_sums.hpp"
@@ -91,6 +92,7 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
                                   "' is R32Uint (RGB9E5 words, as a spatial chain keeps it)");
   };
   if (r.color_history) rgb9e5_words(*r.color_history, "the colour history");
+  if (r.estimate) require_moments_words(graph, r.estimate->moments, "add_atrous");
   if (first_packed) rgb9e5_words(r.color_in, "the first packed iteration's temporal result");
   if (r.corrects_history && !(packed_in && packed_out && r.color_history))
     throw std::invalid_argument(

@@ -34,7 +34,7 @@ struct AtrousResources {
   // Packed surface texels (8 bytes a pixel: depth, its gradient, normal): written by the first packed
   // iteration, read by every packed-in one instead of depth_normal.
   std::optional<graph::ResourceId> surface;
-  // Read by the first packed iteration's variance estimate: the moments, RGBA16F (E[l], sqrt(Var[l]), n),
+  // Read by the first packed iteration's variance estimate: the moments, R32Uint words (temporal.hpp),
   // and the albedo the signal is re-modulated by (the spatial estimate compares radiance).
   std::optional<VarianceEstimateInputs> estimate;
   // A one-signal chain's last packed-in iteration may do the composite pass's work itself

@@ -53,7 +53,7 @@ Chain add_chain(graph::RenderGraph& graph, PipelineCache& pipelines, graph::Reso
   // result is its displayed colour, RGBA16F.
   const F color_format = spatial ? F::R32Uint : F::RGBA16F;
   c.color_history = graph.add_image(prefix + "color_history", w, h, color_format, Lifetime::Persistent);
-  c.moments = graph.add_image(prefix + "moments", w, h, F::RGBA16F, Lifetime::Persistent);
+  c.moments = graph.add_image(prefix + "moments", w, h, F::R32Uint, Lifetime::Persistent);  // pack_moments
   // Without a spatial filter, or with history_tap -1, the temporal result is itself next frame's
   // colour history (and no a-trous iteration writes one).
   c.integrated =

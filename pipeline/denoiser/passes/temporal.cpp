@@ -47,6 +47,7 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
     throw std::invalid_argument("add_temporal: '" + graph.resource(r.color_history).name + "' and '" +
                                 graph.resource(r.integrated).name +
                                 "' are both RGBA16F or both R32Uint (RGB9E5 words)");
+  require_moments_words(graph, r.moments, "add_temporal");
   const hal::ShaderInfo* shader = &temporal_shader(adaptive, r.virtual_motion, rgb9e5);
   const hal::PipelineHandle pipeline = pipelines.get<Uniforms>(*shader);
   std::vector<Binding> bindings{{"illumination", r.illumination},
@@ -69,6 +70,12 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
                                                         ctx.history_valid(r.moments);
                             std::memcpy(uniforms.data() + offsetof(Uniforms, history_valid), &valid, sizeof valid);
                           });
+}
+
+void require_moments_words(const graph::RenderGraph& graph, graph::ResourceId moments, const std::string& pass) {
+  if (graph.resource(moments).format != hal::Format::R32Uint)
+    throw std::invalid_argument(pass + ": the moments '" + graph.resource(moments).name +
+                                "' are R32Uint (E[l], sqrt(Var[l]) and n in one word)");
 }
 
 }  // namespace asvgf::passes

@@ -19,7 +19,9 @@ struct TemporalResources {
   graph::ResourceId depth_normal = 0;  // read, and its history read: persistent RGBA16UI
   // Its history read: persistent, RGBA16F (rgb, variance) or R32Uint (RGB9E5 words, a spatial chain's).
   graph::ResourceId color_history = 0;
-  graph::ResourceId moments = 0;  // history read and written: persistent RGBA16F (E[l], sqrt(Var[l]), n, 0)
+  // History read and written: persistent R32Uint, E[l], sqrt(Var[l]) and n in one word
+  // (shaders/common/denoise.glsl: pack_moments).
+  graph::ResourceId moments = 0;
   // Written, in color_history's format: RGBA16F (rgb, temporal variance) or RGB9E5 words (rgb); may be
   // color_history.
   graph::ResourceId integrated = 0;
@@ -29,9 +31,14 @@ struct TemporalResources {
   bool virtual_motion = false;  // `motion` goes through reflections: loose depth test (specular_motion.comp)
 };
 // Adds "<prefix>temporal". The adaptive variant is used when a gradient is given. Throws
-// std::invalid_argument where color_history and integrated are not both RGBA16F or both R32Uint.
+// std::invalid_argument where color_history and integrated are not both RGBA16F or both R32Uint, or
+// the moments are not R32Uint.
 // Histories not valid this frame (first frame, GraphRuntime::reset_histories) reset every pixel.
 graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipelines, const TemporalResources& r,
                                 const DenoiseSettings& settings);
+
+// Throws std::invalid_argument, naming `pass` and the image, unless `moments` is R32Uint: the words
+// the temporal pass writes, which the passes that read them check too.
+void require_moments_words(const graph::RenderGraph& graph, graph::ResourceId moments, const std::string& pass);
 
 }  // namespace asvgf::passes

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "denoiser/passes/temporal.hpp"
 #include "shaders/variance.hpp"
 
 namespace asvgf::passes {
@@ -19,6 +20,7 @@ graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipeli
   if (graph.resource(r.integrated).format != hal::Format::R32Uint)
     throw std::invalid_argument("add_variance: the temporal result '" + graph.resource(r.integrated).name +
                                 "' is R32Uint (RGB9E5 words, as a spatial chain keeps it)");
+  require_moments_words(graph, r.moments, "add_variance");
   const auto& decl = graph.resource(r.color_variance);
   const Uniforms u{decl.width,   decl.height, s.sigma_z, s.sigma_n, luminance_sigma(s, decl.width, decl.height),
                    s.min_history};

@@ -12,13 +12,13 @@ namespace asvgf::passes {
 
 struct VarianceResources {
   graph::ResourceId integrated = 0;      // read: the temporal pass's R32Uint (RGB9E5 words)
-  graph::ResourceId moments = 0;         // read: this frame's RGBA16F moments (E[l], sqrt(Var[l]), n)
+  graph::ResourceId moments = 0;         // read: this frame's moments, R32Uint words (temporal.hpp)
   graph::ResourceId depth_normal = 0;    // read: RGBA16UI
   graph::ResourceId color_variance = 0;  // written: RGBA16F (rgb, variance)
   graph::ResourceId albedo = 0;          // read: what the signal is re-modulated by (the spatial estimate's scale)
   std::string prefix;                    // of the pass name: "specular." for the second signal
 };
-// Adds "<prefix>variance". Throws std::invalid_argument where integrated is not R32Uint.
+// Adds "<prefix>variance". Throws std::invalid_argument where integrated or moments is not R32Uint.
 graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipelines, const VarianceResources& r,
                                 const DenoiseSettings& settings);
 
