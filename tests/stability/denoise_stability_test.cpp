@@ -258,8 +258,8 @@ TEST_CASE("denoise stability: alpha = 1 and alpha = 0.01 with the history cap re
 }
 
 // The moments word keeps n exact only to 32 (shaders/common/denoise.glsl: pack_moments); above, a
-// step is more than a frame, and rounding to nearest would hold n at 32 for ever (alpha 1/32 where
-// the settings ask for 1/96).
+// step is more than a frame, and rounding to nearest (ties up) would hold n at 64, where a step is
+// 4, for ever (alpha 1/64 where the settings ask for 1/96).
 TEST_CASE("denoise stability: the history length grows a frame a frame past 32 (history_cap 256, alpha 0.001)") {
   ValidatedDevice device;
   asvgf::DenoiseSettings s;
@@ -278,7 +278,7 @@ TEST_CASE("denoise stability: the history length grows a frame a frame past 32 (
     }
   MESSAGE("history length after " << kFrames << " frames: mean " << sum / 256 << ", lowest " << lowest);
   // Each pixel's n wanders by its roundings (about 13 frames' standard deviation here), its mean by
-  // a sixteenth of that; held at 32 both would fail.
+  // a sixteenth of that; held at 64 both would fail.
   CHECK(std::abs(sum / 256 - kFrames) <= 3.0);
   CHECK(lowest >= 48.0);
 }
