@@ -27,6 +27,7 @@ struct BenchOptions {
   int bandwidth_mib = 0;   // 0: 256 MiB on a GPU, 16 MiB on a CPU device
   float time_step = 1.0f;  // scene time per frame
   bool cache_latency = false;
+  bool traffic = false;
 };
 
 // The passes that trace rays (pathtrace_carried: A-SVGF's re-shaded gradient samples, apart with
@@ -43,6 +44,22 @@ struct Floor {
 };
 
 using report::median;
+
+// Each pass's declared resources and their bytes a pixel: what the B/pixel column is made of.
+void print_traffic(const std::vector<graph::PassTraffic>& traffic, double pixels) {
+  std::printf("\ntraffic (B/pixel of each declared resource: r read, w written, h last frame's version read):\n");
+  for (const auto& t : traffic) {
+    std::printf("%-22s %8.1f\n", t.pass.c_str(), double(t.read_bytes + t.written_bytes) / pixels);
+    for (const auto& r : t.resources) {
+      const char* use = r.history ? "h" : r.read && r.written ? "rw" : r.read ? "r" : "w";
+      if (r.bytes == 0)
+        std::printf("  %-30s %-2s %8s\n", r.name.c_str(), use, "?");
+      else
+        std::printf("  %-30s %-2s %8.1f\n", r.name.c_str(), use,
+                    double(r.bytes) * (r.read && r.written ? 2 : 1) / pixels);
+    }
+  }
+}
 
 void print_cache_latency(hal::Device& device) {
   const auto rows = measure_cache_latency(device);
@@ -113,8 +130,8 @@ int run_bench(BenchOptions& o) {
   }
   // The bytes of the last frame's passes; the measured frames all run the same passes.
   std::map<std::string, Floor> floors;
-  for (const auto& t : graph::pass_traffic(renderer.last_frame()))
-    floors[t.pass] = {t.read_bytes + t.written_bytes, !t.uncounted_reads};
+  const auto traffic = graph::pass_traffic(renderer.last_frame());
+  for (const auto& t : traffic) floors[t.pass] = {t.read_bytes + t.written_bytes, !t.uncounted_reads};
   const std::uint64_t copy_bytes = std::uint64_t(o.bandwidth_mib > 0 ? o.bandwidth_mib : cpu ? 16 : 256) << 20;
   const auto bandwidth =
       measure_copy_bandwidth(*device, std::min(copy_bytes, device->capabilities().max_buffer_size), 20);
@@ -148,6 +165,7 @@ int run_bench(BenchOptions& o) {
       "  bytes each pass's declared images and buffers hold, read plus written, each once; B/pixel: the\n"
       "  same over the frame's pixels; + scene reads: the pass also traverses the scene, whose reads the\n"
       "  floor leaves out)\n");
+  if (o.traffic) print_traffic(traffic, pixels);
   if (bandwidth)
     std::printf("\ncopy bandwidth:        %.3f TB/s (a %llu MiB buffer copy, read + written, median of 20: %.4f ms)\n",
                 bandwidth->bytes_per_second * 1e-12, static_cast<unsigned long long>(bandwidth->bytes >> 20),
@@ -184,6 +202,9 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_flag("--cache-latency", o->cache_latency,
                 "After the frames, time chains of dependent loads from 8 KiB to 64 MiB through a storage buffer and "
                 "a sampled image: where each kind of load's cache ends (porting: hal/PORTING.md)");
+  cmd->add_flag("--traffic", o->traffic,
+                "After the pass table, each pass's declared images and buffers with their bytes a pixel (what its "
+                "B/pixel column is made of)");
   return [o] { return run_bench(*o); };
 }
 

@@ -12,12 +12,21 @@
 
 namespace asvgf::graph {
 
+// One declared resource of a pass: its bytes (0: size unknown) and how the pass uses it.
+struct ResourceTraffic {
+  std::string name;
+  std::uint64_t bytes = 0;
+  bool read = false, written = false;
+  bool history = false;  // read as last frame's version
+};
+
 struct PassTraffic {
   std::string pass;
   std::uint64_t read_bytes = 0, written_bytes = 0;
   // The pass also reads resources of unknown size (imported scene buffers: a traversal's random
   // reads), so its bytes are a lower bound and no floor follows from them.
   bool uncounted_reads = false;
+  std::vector<ResourceTraffic> resources;  // what the bytes are, in declaration order
 };
 
 // Per executed pass, in execution order.

@@ -418,6 +418,16 @@ TEST_CASE("pass traffic: each declared image and sized buffer counts once per pa
   CHECK(traffic[1].read_bytes == 480 + 240);
   CHECK(traffic[1].written_bytes == 240 + 960);
   CHECK_FALSE(traffic[1].uncounted_reads);
+  // What the bytes are made of: each access once, in declaration order.
+  REQUIRE(traffic[1].resources.size() == 4);
+  CHECK(traffic[1].resources[0].name == "a");
+  CHECK(traffic[1].resources[0].bytes == 480);
+  CHECK(traffic[1].resources[1].name == "h");
+  CHECK(traffic[1].resources[1].history);
+  CHECK(traffic[1].resources[2].name == "h");
+  CHECK((traffic[1].resources[2].written && !traffic[1].resources[2].history));
+  CHECK(traffic[1].resources[3].bytes == 960);
+  CHECK(traffic[0].resources[0].bytes == 0);  // the scene: size unknown
 }
 
 TEST_CASE("history ping-pong: a pass reads last frame's version, cleared on the first frame and after a reset") {

@@ -24,6 +24,7 @@ std::vector<PassTraffic> pass_traffic(const CompiledFrame& frame) {
       if (bytes == 0 && reads(a.use)) t.uncounted_reads = true;
       if (reads(a.use)) t.read_bytes += bytes;
       if (writes(a.use)) t.written_bytes += bytes;
+      t.resources.push_back({resources[a.resource].name, bytes, reads(a.use), writes(a.use), a.history});
     }
     out.push_back(std::move(t));
   }
