@@ -197,22 +197,37 @@ inline std::uint32_t pack_rgb9e5(double r, double g, double b) {
   for (int i = 0; i < 3; ++i) word |= static_cast<std::uint32_t>(std::floor(c[i] / quantum + 0.5)) << (9 * i);
   return word;
 }
-// An image's colour as RGB9E5 words (one channel) and as what they hold (rgb, alpha 0).
-inline ImageD rgb9e5_words(const ImageD& color) {
-  ImageD out(color.width, color.height, 1);
-  for (int y = 0; y < color.height; ++y)
-    for (int x = 0; x < color.width; ++x)
-      out.at(x, y, 0) = pack_rgb9e5(color.at(x, y, 0), color.at(x, y, 1), color.at(x, y, 2));
+// Each pixel's first three channels as one word (one channel), by `pack`; and words as the three
+// values `unpack` gives (a std::array<double, 3>; alpha 0).
+template <class Pack>
+ImageD words_of(const ImageD& image, Pack pack) {
+  ImageD out(image.width, image.height, 1);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      out.at(x, y, 0) = pack(image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2));
   return out;
 }
-inline ImageD rgb9e5_values(const ImageD& words) {
+template <class Unpack>
+ImageD values_of(const ImageD& words, Unpack unpack) {
   ImageD out(words.width, words.height, 4);
   for (int y = 0; y < words.height; ++y)
     for (int x = 0; x < words.width; ++x) {
-      const auto word = static_cast<std::uint32_t>(words.at(x, y, 0));
-      for (int c = 0; c < 3; ++c) out.at(x, y, c) = ((word >> (9 * c)) & 511u) * rgb9e5_quantum(word);
+      const std::array<double, 3> v = unpack(static_cast<std::uint32_t>(words.at(x, y, 0)));
+      for (int c = 0; c < 3; ++c) out.at(x, y, c) = v[static_cast<std::size_t>(c)];
     }
   return out;
+}
+// What an RGB9E5 word holds (r, g, b).
+inline std::array<double, 3> unpack_rgb9e5(std::uint32_t word) {
+  const double quantum = rgb9e5_quantum(word);
+  return {(word & 511u) * quantum, ((word >> 9) & 511u) * quantum, ((word >> 18) & 511u) * quantum};
+}
+// An image's colour as RGB9E5 words (one channel) and as what they hold (rgb, alpha 0).
+inline ImageD rgb9e5_words(const ImageD& color) {
+  return words_of(color, pack_rgb9e5);
+}
+inline ImageD rgb9e5_values(const ImageD& words) {
+  return values_of(words, unpack_rgb9e5);
 }
 // Read-back buffers of packed colour and surface texels (2 words a pixel each) as the reference's
 // inputs: colour and variance (the halves, exactly), and depth_normal with the packed depth, normal
@@ -310,20 +325,10 @@ inline std::array<double, 3> unpack_moments(std::uint32_t word) {
 }
 // Moments images (E[l], sqrt(Var[l]), n, -) as words (one channel) and words as what they hold.
 inline ImageD moments_words(const ImageD& moments) {
-  ImageD out(moments.width, moments.height, 1);
-  for (int y = 0; y < moments.height; ++y)
-    for (int x = 0; x < moments.width; ++x)
-      out.at(x, y, 0) = pack_moments(moments.at(x, y, 0), moments.at(x, y, 1), moments.at(x, y, 2));
-  return out;
+  return words_of(moments, [](double mean, double std_dev, double n) { return pack_moments(mean, std_dev, n); });
 }
 inline ImageD moments_values(const ImageD& words) {
-  ImageD out(words.width, words.height, 4);
-  for (int y = 0; y < words.height; ++y)
-    for (int x = 0; x < words.width; ++x) {
-      const auto m = unpack_moments(static_cast<std::uint32_t>(words.at(x, y, 0)));
-      for (int c = 0; c < 3; ++c) out.at(x, y, c) = m[static_cast<std::size_t>(c)];
-    }
-  return out;
+  return values_of(words, unpack_moments);
 }
 // The largest error the word's rounding of a standard deviation or a history length of magnitude v
 // makes: half a step of its 4 mantissa bits (after the standard deviation's fp16 rounding).
