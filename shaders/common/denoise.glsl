@@ -26,9 +26,10 @@ bool hit(Surface s) { return s.z > 0.0; }
 //               nearest: within 1/32 relative. The standard deviation only scales edge-stopping
 //               weights and the next frame's blend, where that is far below the sample's own noise.
 //   bits 24-31  n: 0 (no history) or 1 + its 4 exponent and 4 mantissa bits for n in [1, 61440]:
-//               within 1/32 relative, integers exact to 32 (the default history_cap), fractions
-//               kept below. Above 32 a step is more than one frame, so the rounding there is
-//               stochastic (`n_rounding`): n + 1 grows by one on average instead of sticking.
+//               integers exact to 32 (the default history_cap), fractions kept below, rounded to
+//               nearest (within 1/32 relative). Above 32 a step is more than one frame, so the
+//               rounding there is stochastic (`n_rounding`, within 1/16): n + 1 grows by one on
+//               average instead of stopping (at 64 if rounded to nearest).
 // fp16 cannot hold E[l^2] above l = 256, but it holds the standard deviation of any luminance the
 // clamped samples can have (<= fp16 max / 2). The passes blend the mean and the variance (Chan et
 // al.'s update, below), so a converged pixel's variance is not E[l^2] - E[l]^2's difference of two

@@ -2,8 +2,9 @@
 // pass's colour and moments, for the variance pass (denoise/variance.comp) and for the first a-trous
 // iteration that estimates it while loading its tile (denoise/atrous.comp, FUSED_VARIANCE). The
 // including shader declares `params` (width, height, sigma_z, sigma_n, sigma_l, min_history) and the
-// textures `integrated` (R32UI: RGB9E5 words, common/color.glsl), `moments` (R32UI: E[l], sqrt(Var[l]) and n in one word, common/denoise.glsl's pack_moments),
-// `depth_normal` and `albedo` (what the signal is re-modulated by). With at least min_history
+// textures `integrated` (R32UI: RGB9E5 words, common/color.glsl), `moments` (R32UI: E[l], sqrt(Var[l])
+// and n in one word, common/denoise.glsl's pack_moments), `depth_normal` and `albedo` (what the
+// signal is re-modulated by). With at least min_history
 // frames of history: the temporal estimate Var[l]; with less, a 7x7 edge-aware spatial estimate of the moments (and of the colour), boosted
 // by min_history / n as in Falcor's SVGF, except that with one frame of history the moments are
 // weighted by depth and normal only (see below). The 7x7 neighbours are fetched directly, only by
