@@ -357,7 +357,7 @@ EOF_PY
           grep -E "^(denoiser|frame)"
       done | tee -a $R/it-bench.txt
       save
-      IT=(--methods asvgf --run 'it4=asvgf --atrous-iterations 4' --run 'it3=asvgf --atrous-iterations 3')
+      IT=(--methods raw --run def=asvgf --run 'it4=asvgf --atrous-iterations 4' --run 'it3=asvgf --atrous-iterations 3')
       for seed in 0 1; do
         timeout 200 $A report "${HD[@]}" "${IT[@]}" --seed $seed --out $R/it-light-exit-s$seed --quiet 2>&1 | tail -1
         save
