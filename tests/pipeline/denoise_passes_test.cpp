@@ -958,25 +958,18 @@ TEST_CASE(
                   std::invalid_argument);
   CHECK_THROWS_AS(passes::add_atrous(g, pipelines, {img, dn, g.add_image("wide", 9, 8, F::RGBA16F)}, 0, settings),
                   std::invalid_argument);
-  CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines,
-                         {words, dn, packed("narrow_moments", 8 * 8 * 8), std::nullopt, "", surface,
-                          passes::VarianceEstimateInputs{g.add_image("moments.small", 7, 8, F::R32Uint), alb}},
-                         0, settings),
-      std::invalid_argument);
-  CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines,
-                         {words, dn, packed("narrow_albedo", 8 * 8 * 8), std::nullopt, "", surface,
-                          passes::VarianceEstimateInputs{mom.moments, g.add_image("albedo.small", 8, 7, F::RGBA16F)}},
-                         0, settings),
-      std::invalid_argument);
+  // The first packed iteration with the variance estimate's inputs given.
+  const auto first_with = [&](const char* out, const passes::VarianceEstimateInputs& estimate) {
+    return passes::add_atrous(g, pipelines, {words, dn, packed(out, 8 * 8 * 8), std::nullopt, "", surface, estimate}, 0,
+                              settings);
+  };
+  CHECK_THROWS_AS(first_with("narrow_moments", {g.add_image("moments.small", 7, 8, F::R32Uint), alb}),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(first_with("narrow_albedo", {mom.moments, g.add_image("albedo.small", 8, 7, F::RGBA16F)}),
+                  std::invalid_argument);
   // The moments as RGBA16F (not pack_moments's words).
-  CHECK_THROWS_AS(
-      passes::add_atrous(g, pipelines,
-                         {words, dn, packed("halves_moments", 8 * 8 * 8), std::nullopt, "", surface,
-                          passes::VarianceEstimateInputs{g.add_image("moments.halves", 8, 8, F::RGBA16F), alb}},
-                         0, settings),
-      std::invalid_argument);
+  CHECK_THROWS_AS(first_with("halves_moments", {g.add_image("moments.halves", 8, 8, F::RGBA16F), alb}),
+                  std::invalid_argument);
   CHECK_NOTHROW(passes::add_atrous(g, pipelines, {words, dn, packed("fits", 8 * 8 * 8), std::nullopt, "", surface, mom},
                                    0, settings));
   // The temporal result and the colour history in another format than RGB9E5 words.
