@@ -23,15 +23,19 @@ struct GraphDenoiserInputs {
   // read: demodulated radiance of this frame, any float format with rgb (our renderer: RGBA16F,
   // finite samples clamped to 65504; the temporal pass clamps there anyway)
   graph::ResourceId illumination = 0;
-  // read: any float format with xy = previous minus current pixel position (our renderer: RGBA16F)
+  // read: xy = previous minus current pixel position, in any float format, or R32UI with x and y as
+  // packHalf2x16's halves (4 bytes a pixel; our renderer's: shaders/common/motion.glsl)
   graph::ResourceId motion = 0;
   // read, and its history: persistent RGBA16UI, the packed surface (shaders/common/depth_normal.glsl):
   // linear view depth, its gradient max(|dz/dx|, |dz/dy|) and the octahedral-encoded unit normal
   // in 8 bytes; all 0 on background (a depth not finite, <= 0 or >= kBackgroundDepth:
   // asvgf::is_background_depth).
   graph::ResourceId depth_normal = 0;
-  // read: RGBA16F, what composite re-modulates by; also the short-history variance estimate's
-  // scale (it compares radiance, the neighbours re-modulated by the pixel's albedo)
+  // read: what composite re-modulates by; also the short-history variance estimate's scale (it
+  // compares radiance, the neighbours re-modulated by the pixel's albedo). Any float format, or
+  // R32UI RGB9E5 words (Vulkan's E5B9G9R9 layout: 4 bytes a pixel, but a channel far below the
+  // largest rounds by up to 1/32 of itself, so divide your radiance by the word's value:
+  // shaders/common/albedo.glsl; our renderer does).
   graph::ResourceId albedo = 0;
   graph::ResourceId counters = 0;  // SanitizeCounters::import of this graph
   graph::ResourceId hdr = 0;       // written by composite: RGBA32F or RGBA16F linear radiance

@@ -2,11 +2,13 @@
 #include "cpu_oracle/denoise_reference.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "asvgf/denoiser.hpp"
 #include "cpu_oracle/denoise_math.hpp"
 #include "cpu_oracle/depth_normal.hpp"
+#include "cpu_oracle/rgb9e5.hpp"
 
 namespace asvgf::reference {
 namespace {
@@ -29,11 +31,16 @@ ConvertedInputs convert_inputs(const ImageD& color, const ImageD& albedo, const 
   ConvertedInputs out{ImageD(w, h, 4), ImageD(w, h, 4), ImageD(w, h, 4)};
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
+      std::array<double, 3> m{};
       for (int c = 0; c < 3; ++c) {
         const double a = albedo.at(x, y, c);
-        const double m = !color_is_radiance ? a : (std::isfinite(a) && a >= 1e-3 ? a : 1.0);
-        out.illumination.at(x, y, c) = color_is_radiance ? color.at(x, y, c) / m : color.at(x, y, c);
-        out.modulation.at(x, y, c) = m;
+        m[c] = !color_is_radiance ? a : (std::isfinite(a) && a >= 1e-3 ? a : 1.0);
+      }
+      // Radiance is divided by what the modulation's RGB9E5 word holds (under composite's guard).
+      if (color_is_radiance) m = unpack_rgb9e5(pack_rgb9e5(m[0], m[1], m[2]));
+      for (int c = 0; c < 3; ++c) {
+        out.illumination.at(x, y, c) = color_is_radiance ? color.at(x, y, c) / std::max(m[c], 1e-3) : color.at(x, y, c);
+        out.modulation.at(x, y, c) = m[c];
       }
       out.modulation.at(x, y, 3) = 1.0;
       out.motion.at(x, y, 0) = scale_x * motion.at(x, y, 0);

@@ -23,7 +23,8 @@ ImageD pack_surface(const ImageD& depth, const ImageD& normal, bool depth_gradie
 // as the denoiser's illumination, re-modulation albedo and motion (scale_x, scale_y:
 // asvgf::motion_scale).
 struct ConvertedInputs {
-  ImageD illumination, modulation, motion;  // 4 channels each (rgb, rgb, xy)
+  // 4 channels each (rgb, rgb, xy); radiance in: the modulation's rgb as its RGB9E5 word holds it
+  ImageD illumination, modulation, motion;
 };
 ConvertedInputs convert_inputs(const ImageD& color, const ImageD& albedo, const ImageD& motion, bool color_is_radiance,
                                double scale_x, double scale_y);

@@ -2,7 +2,8 @@
 
 #include "asvgf/graph_runtime.hpp"
 #include "shaders/export_aovs.hpp"
-#include "shaders/widen_image.hpp"
+#include "shaders/widen_image.floats.hpp"
+#include "shaders/widen_image.halves.hpp"
 
 namespace asvgf::passes {
 
@@ -22,10 +23,12 @@ graph::PassBuilder add_export_aovs(graph::RenderGraph& graph, PipelineCache& pip
 
 graph::PassBuilder add_image_widen(graph::RenderGraph& graph, PipelineCache& pipelines, const std::string& name,
                                    graph::ResourceId src, graph::ResourceId dst) {
-  using Uniforms = asvgf::shaders::widen_image_uniforms::Params;
+  using Uniforms = asvgf::shaders::widen_image_floats_uniforms::Params;
   const auto& decl = graph.resource(src);
   const Uniforms u{decl.width, decl.height};
-  const hal::ShaderInfo& shader = asvgf::shaders::widen_image;
+  // R32Uint: two halves a word (the G-buffer's motion)
+  const hal::ShaderInfo& shader =
+      decl.format == hal::Format::R32Uint ? asvgf::shaders::widen_image_halves : asvgf::shaders::widen_image_floats;
   return add_compute_pass(graph, name, shader, pipelines.get<Uniforms>(shader), {{"source", src}, {"target", dst}},
                           to_bytes(u), {u.width, u.height, 1});
 }

@@ -19,7 +19,8 @@ struct ExportAovResources {
 // Adds "export_aovs".
 graph::PassBuilder add_export_aovs(graph::RenderGraph& graph, PipelineCache& pipelines, const ExportAovResources& r);
 
-// Adds a pass `name` writing float image `src` (any format) into the RGBA32F image `dst` of its size.
+// Adds a pass `name` writing image `src` (any float format, or R32Uint of two halves a word: the
+// G-buffer's motion) into the RGBA32F image `dst` of its size.
 graph::PassBuilder add_image_widen(graph::RenderGraph& graph, PipelineCache& pipelines, const std::string& name,
                                    graph::ResourceId src, graph::ResourceId dst);
 

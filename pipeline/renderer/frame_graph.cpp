@@ -86,8 +86,9 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
   const bool full_range = !method;
   const ResourceId illumination = g.add_image("illumination", w, h, full_range ? F::RGBA32F : F::RGBA16F);
   const ResourceId vbuffer = g.add_image("visibility", w, h, F::RGBA32Uint);
-  const ResourceId motion = g.add_image("motion", w, h, F::RGBA16F);  // xy used
-  const ResourceId albedo = g.add_image("albedo", w, h, F::RGBA16F);
+  const ResourceId motion = g.add_image("motion", w, h, F::R32Uint);  // x, y as halves (shaders/common/motion.glsl)
+  // RGB9E5 words: what the path tracer divides by (shaders/common/albedo.glsl)
+  const ResourceId albedo = g.add_image("albedo", w, h, F::R32Uint);
   // Two signals only where a second chain has something to filter and every consumer of the
   // illumination knows the split: the reprojected gradient and the AOVs read one signal.
   const bool split = s.specular_split && scene_gpu.glossy() && method &&

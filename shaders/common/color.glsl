@@ -71,5 +71,8 @@ uint pack_rgb9e5(vec3 rgb) {
 vec3 unpack_rgb9e5(uint u) {
   return vec3(uvec3(u, u >> 9, u >> 18) & 511u) * uintBitsToFloat(((u >> 27) + 103u) << 23);
 }
+// What an RGB9E5 word holds of rgb: what a renderer divides by when it stores its albedo as words
+// (common/albedo.glsl).
+vec3 round_to_rgb9e5(vec3 rgb) { return unpack_rgb9e5(pack_rgb9e5(rgb)); }
 
 #endif

@@ -1,7 +1,7 @@
 // common/composite.glsl: re-modulation and display of one pixel, for the composite pass
 // (denoise/composite.comp) and for the last a-trous iteration that does it itself
 // (denoise/atrous.comp, COMPOSITE). The including shader declares `params` (exposure, tonemap), the
-// textures `albedo` (and with SPLIT `specular`, `specular_albedo`), the images `hdr` (rgba32f, or
+// albedo (common/albedo.glsl), the textures `specular` and `specular_albedo` with SPLIT, the images `hdr` (rgba32f, or
 // rgba16f with HDR_HALF) and `display` (rgba8) and the SanitizeCounters buffer `counters`.
 // Re-modulates the filtered illumination with the albedo (the inverse of the path tracer's
 // demodulation radiance / max(albedo, 1e-3)), writes HDR radiance and a display image: exposure,
@@ -21,7 +21,7 @@ float srgb_encode(float c) { return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 
 
 // `light`: pixel p's filtered (demodulated) illumination.
 void composite_pixel(ivec2 p, vec3 light) {
-  vec3 radiance = light * max(texelFetch(albedo, p, 0).rgb, vec3(1e-3));
+  vec3 radiance = light * max(albedo_at(p), vec3(1e-3));
 #ifdef SPLIT
   radiance += texelFetch(specular, p, 0).rgb * max(texelFetch(specular_albedo, p, 0).rgb, vec3(1e-3));
 #endif

@@ -1,14 +1,14 @@
 // common/variance_estimate.glsl: SVGF's per-pixel luminance variance (sec. 4.2) from the temporal
 // pass's colour and moments, for the variance pass (denoise/variance.comp) and for the first a-trous
 // iteration that estimates it while loading its tile (denoise/atrous.comp, FUSED_VARIANCE). The
-// including shader declares `params` (width, height, sigma_z, sigma_n, sigma_l, min_history) and the
+// including shader declares `params` (width, height, sigma_z, sigma_n, sigma_l, min_history), the
 // textures `integrated` (R32UI: RGB9E5 words, common/color.glsl), `moments` (R32UI: E[l], sqrt(Var[l])
-// and n in one word, common/denoise.glsl's pack_moments), `depth_normal` and `albedo` (what the
-// signal is re-modulated by). With at least min_history
-// frames of history: the temporal estimate Var[l]; with less, a 7x7 edge-aware spatial estimate of the moments (and of the colour), boosted
-// by min_history / n as in Falcor's SVGF, except that with one frame of history the moments are
-// weighted by depth and normal only (see below). The 7x7 neighbours are fetched directly, only by
-// pixels with a short history.
+// and n in one word, common/denoise.glsl's pack_moments) and `depth_normal`, and the albedo (what the
+// signal is re-modulated by: common/albedo.glsl). With at least min_history frames of history: the
+// temporal estimate Var[l]; with less, a 7x7 edge-aware spatial estimate of the moments (and of the
+// colour), boosted by min_history / n as in Falcor's SVGF, except that with one frame of history the
+// moments are weighted by depth and normal only (see below). The 7x7 neighbours are fetched
+// directly, only by pixels with a short history.
 #ifndef ASVGF_COMMON_VARIANCE_ESTIMATE_GLSL
 #define ASVGF_COMMON_VARIANCE_ESTIMATE_GLSL
 
@@ -31,7 +31,7 @@ vec4 estimate_color_variance(ivec2 p, Surface center) {
     // is set: the neighbours' light re-modulated by this pixel's albedo. Comparing the demodulated
     // signal made the weight 1/albedo times stricter, and demodulation cost error on untextured
     // surfaces where it should change nothing (docs/quality.md).
-    vec3 ap = texelFetch(albedo, p, 0).rgb;
+    vec3 ap = albedo_at(p);
     float lp = luminance(ap * color);
     vec3 sum_c = vec3(0.0);
     vec3 sum_m = vec3(0.0);  // the neighbours' mixture (common/denoise.glsl: mixture_term)

@@ -92,7 +92,8 @@ layout(set = 0, binding = 2) uniform utexture2D depth_normal;
 #ifdef PACKED_OUT
 layout(set = 0, binding = 3, std430) writeonly buffer ColorOut { uvec2 texels[]; } color_out;
 #elif defined(COMPOSITE)
-layout(set = 0, binding = 7) uniform texture2D albedo;
+#define ALBEDO_BINDING 7  // float, or RGB9E5 words with ALBEDO_RGB9E5
+#include "common/albedo.glsl"
 #ifdef HDR_HALF
 layout(set = 0, binding = 8, rgba16f) writeonly uniform image2D hdr;
 #else
@@ -130,7 +131,8 @@ layout(set = 0, binding = 12) uniform texture2D temporal_sums;  // x, z, w: the 
 #endif
 #ifdef FIRST_PACKED
 layout(set = 0, binding = 5, std430) writeonly buffer SurfaceOut { uvec2 texels[]; } surface;
-layout(set = 0, binding = 7) uniform texture2D albedo;  // the variance estimate's (COMPOSITE's binding)
+#define ALBEDO_BINDING 7  // the variance estimate's (COMPOSITE's binding)
+#include "common/albedo.glsl"
 #include "common/variance_estimate.glsl"
 #endif
 

@@ -28,7 +28,8 @@ layout(set = 0, binding = 1) uniform utexture2D illumination;
 #else
 layout(set = 0, binding = 1) uniform texture2D illumination;
 #endif
-layout(set = 0, binding = 2) uniform texture2D albedo;
+#define ALBEDO_BINDING 2
+#include "common/albedo.glsl"  // float, or RGB9E5 words with ALBEDO_RGB9E5
 #ifdef HDR_HALF
 layout(set = 0, binding = 3, rgba16f) writeonly uniform image2D hdr;
 #else

@@ -1,10 +1,12 @@
 // convert_inputs.comp: a renderer's buffers in its own conventions as the denoiser's (the public
 // API's first pass where they differ, asvgf::DenoiserConfig::color_input and ::motion).
-//  - Radiance in (color_is_radiance = 1): illumination = radiance / a and the albedo the composite
-//    re-modulates by = a, per channel, with a = albedo where albedo >= kMinAlbedo, else 1 (where a
-//    surface has no albedo to divide by, e.g. a black or an emitting one whose renderer writes 0,
-//    the radiance passes through unfiltered by texture). An emitter whose albedo holds its emission
-//    (Cycles' Denoising Albedo) is divided by it and multiplied back.
+//  - Radiance in (color_is_radiance = 1): illumination = radiance / max(a, kMinAlbedo) and the albedo
+//    the composite re-modulates by (the same guard) = a, an RGB9E5 word (4 bytes a pixel; divided by
+//    its own value, so re-modulation gives back the radiance: common/albedo.glsl), per channel, with
+//    a = albedo where albedo >= kMinAlbedo, else 1 (where a surface has no albedo to divide by, e.g.
+//    a black or an emitting one whose renderer writes 0, the radiance passes through unfiltered by
+//    texture). An emitter whose albedo holds its emission (Cycles' Denoising Albedo) is divided by
+//    it and multiplied back.
 //  - Motion: m = scale * v per axis (asvgf::motion_scale: the sign, UV or NDC units to pixels, y up
 //    to down). The result is previous minus current position, in pixels, y down.
 // CPU twin: reference::convert_inputs (pipeline/cpu_oracle/denoise_reference.cpp).
@@ -30,7 +32,7 @@ layout(set = 0, binding = 1) uniform texture2D color;
 layout(set = 0, binding = 2) uniform texture2D albedo;
 layout(set = 0, binding = 3) uniform texture2D motion;
 layout(set = 0, binding = 4, rgba32f) writeonly uniform image2D illumination;
-layout(set = 0, binding = 5, rgba16f) writeonly uniform image2D modulation;
+layout(set = 0, binding = 5, r32ui) writeonly uniform uimage2D modulation;  // RGB9E5 words
 layout(set = 0, binding = 6, rgba32f) writeonly uniform image2D motion_out;
 
 const float kMinAlbedo = 1e-3;
@@ -45,12 +47,11 @@ void main() {
     // NaN and negative albedos count as none (the validator reports them); the sample stays as it
     // is, NaN included, for the temporal pass to drop and count.
     for (int i = 0; i < 3; ++i) m[i] = a[i] >= kMinAlbedo && !not_finite(a[i]) ? a[i] : 1.0;
-    c /= m;
-  } else {
-    m = a;
-  }
+    const uint word = pack_rgb9e5(m);
+    c /= max(unpack_rgb9e5(word), vec3(kMinAlbedo));  // composite's guard (common/composite.glsl)
+    imageStore(modulation, p, uvec4(word));
+  }  // else the caller's albedo is re-modulated by as it is (modulation is not read)
   imageStore(illumination, p, vec4(c, 0.0));
-  imageStore(modulation, p, vec4(round_to_half(m), 1.0));
   vec2 v = texelFetch(motion, p, 0).xy;
   imageStore(motion_out, p, vec4(vec2(params.motion_scale_x, params.motion_scale_y) * v, 0.0, 0.0));
 }

@@ -29,7 +29,8 @@ layout(set = 0, binding = 0) uniform Params {
   uint history_valid;  // 0: no last frame (first frame, reset): no gradient
 } params;
 layout(set = 0, binding = 1) uniform texture2D illumination;
-layout(set = 0, binding = 2) uniform texture2D motion;
+#define MOTION_BINDING 2  // float, or halves with MOTION_HALVES
+#include "common/motion.glsl"
 layout(set = 0, binding = 3) uniform utexture2D depth_normal;
 layout(set = 0, binding = 4) uniform utexture2D prev_depth_normal;
 layout(set = 0, binding = 5) uniform texture2D prev_noisy_luminance;
@@ -44,7 +45,7 @@ vec2 reproject(ivec2 p) {
   imageStore(noisy_luminance, p, vec4(l, 0.0, 0.0, 0.0));
   Surface cur = surface_from(texelFetch(depth_normal, p, 0));
   if (params.history_valid == 0u || !finite || !hit(cur)) return vec2(-1.0, 0.0);
-  vec2 q = vec2(p) + 0.5 + texelFetch(motion, p, 0).xy;
+  vec2 q = vec2(p) + 0.5 + motion_at(p).xy;
   if (!(q.x >= 0.0 && q.y >= 0.0 && q.x < float(params.width) && q.y < float(params.height))) return vec2(-1.0, 0.0);
   ivec2 qi = ivec2(q);
   if (!reprojection_consistent(cur, surface_from(texelFetch(prev_depth_normal, qi, 0)))) return vec2(-1.0, 0.0);

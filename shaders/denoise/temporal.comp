@@ -37,7 +37,8 @@ layout(set = 0, binding = 0) uniform Params {
   uint pad2;
 } params;
 layout(set = 0, binding = 1) uniform texture2D illumination;
-layout(set = 0, binding = 2) uniform texture2D motion;
+#define MOTION_BINDING 2  // float, or halves with MOTION_HALVES
+#include "common/motion.glsl"
 layout(set = 0, binding = 3) uniform utexture2D depth_normal;
 layout(set = 0, binding = 4) uniform utexture2D prev_depth_normal;
 #ifdef COLOR_RGB9E5
@@ -77,7 +78,7 @@ struct History {
 History reproject(ivec2 p, Surface cur) {
   History h = History(vec3(0.0), Moments(0.0, 0.0), 0.0, false);
   vec3 sum_m = vec3(0.0);  // the taps' mixture (common/denoise.glsl: mixture_term)
-  vec4 mv = texelFetch(motion, p, 0);
+  vec4 mv = motion_at(p);
   vec2 prev = vec2(p) + 0.5 + mv.xy;
 #ifdef VIRTUAL_MOTION
   bool through_reflection = mv.z > 0.5;

@@ -26,7 +26,8 @@ layout(set = 0, binding = 1) uniform utexture2D integrated;  // RGB9E5 words (te
 layout(set = 0, binding = 2) uniform utexture2D moments;  // E[l], sqrt(Var[l]), history length: pack_moments
 layout(set = 0, binding = 3) uniform utexture2D depth_normal;
 layout(set = 0, binding = 4, rgba16f) writeonly uniform image2D color_variance;
-layout(set = 0, binding = 5) uniform texture2D albedo;  // what the signal is re-modulated by
+#define ALBEDO_BINDING 5  // what the signal is re-modulated by: float, or RGB9E5 words (ALBEDO_RGB9E5)
+#include "common/albedo.glsl"
 
 #include "common/variance_estimate.glsl"
 

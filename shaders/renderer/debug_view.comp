@@ -25,8 +25,12 @@ layout(set = 0, binding = 0, std140) uniform Params {
 } params;
 
 layout(set = 0, binding = 1) uniform utexture2D depth_normal;
-layout(set = 0, binding = 2) uniform texture2D motion;
-layout(set = 0, binding = 3) uniform texture2D albedo;
+#define MOTION_HALVES  // the G-buffer's (gbuffer.comp)
+#define MOTION_BINDING 2
+#include "common/motion.glsl"
+#define ALBEDO_RGB9E5  // the G-buffer's (gbuffer.comp)
+#define ALBEDO_BINDING 3
+#include "common/albedo.glsl"
 layout(set = 0, binding = 4) uniform texture2D illumination;
 layout(set = 0, binding = 5, rgba8) writeonly uniform image2D debug_view;
 layout(set = 0, binding = 6) uniform texture2D gradient;
@@ -54,12 +58,12 @@ void main() {
   } else if (params.mode == 1u) {
     c = vec3(clamp(z * params.depth_scale, 0.0, 1.0));
   } else if (params.mode == 2u) {
-    vec2 m = texelFetch(motion, p, 0).xy;
+    vec2 m = motion_at(p).xy;
     c = abs(m.x) > 1e5 ? vec3(1.0, 0.0, 1.0) : vec3(clamp(0.5 + m * 0.05, 0.0, 1.0), 0.5);
   } else if (params.mode == 3u) {
-    c = texelFetch(albedo, p, 0).rgb;
+    c = albedo_at(p);
   } else if (params.mode == 4u) {
-    vec3 l = texelFetch(illumination, p, 0).rgb * texelFetch(albedo, p, 0).rgb;
+    vec3 l = texelFetch(illumination, p, 0).rgb * albedo_at(p);
     c = l / (1.0 + l);
   } else if (params.mode == 5u) {
     c = heat(gradient_lambda(p));

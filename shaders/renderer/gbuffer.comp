@@ -30,10 +30,13 @@ layout(set = 0, binding = 6, std430) readonly buffer PreviousTriangles { Triangl
 layout(set = 0, binding = 10, rgba32ui) writeonly uniform uimage2D visibility;
 layout(set = 0, binding = 11, rgba16ui) writeonly uniform uimage2D depth_normal;  // common/depth_normal.glsl
 // Half floats: 2^-11 of the motion (0.05 px at 100 px) is far below what the bilinear reprojection
-// resolves, and 8 bytes a pixel fewer written here and read by the temporal pass. rgba: ESSL 310 has
-// no rg formats.
-layout(set = 0, binding = 12, rgba16f) writeonly uniform image2D motion;
-layout(set = 0, binding = 13, rgba16f) writeonly uniform image2D albedo;
+// resolves. x and y packed in one word (common/motion.glsl's MOTION_HALVES): ESSL 310 and WebGPU
+// store no rg16f, and RGBA16F would move 4 bytes a pixel more here and in the temporal pass.
+layout(set = 0, binding = 12, r32ui) writeonly uniform uimage2D motion;
+// RGB9E5 words (common/albedo.glsl): what pathtrace.comp divides the radiance by, so exact to
+// re-modulate by, in 4 bytes a pixel rather than RGBA16F's 8 (written here, read by the composite and
+// the variance estimate).
+layout(set = 0, binding = 13, r32ui) writeonly uniform uimage2D albedo;
 
 // View depth where the ray through `pixel` meets the plane (point, normal); 0 if parallel.
 float plane_depth(vec2 pixel, vec3 point, vec3 n) {
@@ -103,7 +106,8 @@ void main() {
 
   imageStore(visibility, p, vis);
   imageStore(depth_normal, p, dn);
-  // Rounded to the nearest half: a store rounding toward zero would shorten every motion (common/color.glsl).
-  imageStore(motion, p, round_to_half_clamped(vec4(mv, 0.0, 0.0)));
-  imageStore(albedo, p, round_to_half_clamped(alb));
+  // Rounded to the nearest half: packHalf2x16's rounding, like a store's, is the implementation's,
+  // and rounding toward zero would shorten every motion (common/color.glsl).
+  imageStore(motion, p, uvec4(packHalf2x16(round_to_half_clamped(vec4(mv, 0.0, 0.0)).xy)));
+  imageStore(albedo, p, uvec4(pack_rgb9e5(alb.rgb)));
 }

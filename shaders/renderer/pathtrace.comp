@@ -397,9 +397,12 @@ Shaded shade(uvec4 vis, uint seed) {
     primary_surface(vis, t, b, n, v);
     vec3 albedo = surface_albedo(vis.y, b);
     if (params.demodulate != 0u) {
-      r.demodulation = demodulation_albedo(vis.y, b, dot(n, v));
+      // Divided by what gbuffer.comp stores, its RGB9E5 word, so that re-modulating by the word
+      // gives back this radiance (common/albedo.glsl).
+      r.demodulation = round_to_rgb9e5(demodulation_albedo(vis.y, b, dot(n, v)));
 #ifdef SPLIT_SPECULAR
       split_demodulation_albedos(vis.y, b, dot(n, v), r.diffuse_albedo, r.ggx_albedo);
+      r.diffuse_albedo = round_to_rgb9e5(r.diffuse_albedo);
 #endif
     }
     vec3 emission = materials.values[t.material].emission.rgb;

@@ -25,6 +25,6 @@ asvgf_add_shader(specular_motion SOURCE renderer/specular_motion.comp)
 # Not a frame pass: the benchmark's bandwidth measurement.
 asvgf_add_shader(bandwidth_copy SOURCE renderer/bandwidth_copy.comp)
 asvgf_add_shader(export_aovs SOURCE renderer/export_aovs.comp)
-asvgf_add_shader(widen_image SOURCE renderer/widen_image.comp)
+asvgf_add_shader(widen_image SOURCE renderer/widen_image.comp VARIANTS floats halves=SOURCE_HALVES)
 # Not a frame pass: the benchmark's cache probe (`--cache-latency`): buffer loads and image loads.
 asvgf_add_shader(cache_latency SOURCE renderer/cache_latency.comp VARIANTS buffer image=CHASE_IMAGE)

@@ -24,7 +24,9 @@ layout(set = 0, binding = 0, std140) uniform Params {
 } params;
 
 layout(set = 0, binding = 1) uniform utexture2D depth_normal;
-layout(set = 0, binding = 2) uniform texture2D motion;
+#define MOTION_HALVES  // the G-buffer's (gbuffer.comp)
+#define MOTION_BINDING 2
+#include "common/motion.glsl"
 layout(set = 0, binding = 3) uniform texture2D specular;  // a: the first specular ray's length, -1 none hit, 0 no ray
 layout(set = 0, binding = 4, rgba32f) writeonly uniform image2D specular_motion;
 
@@ -35,7 +37,7 @@ void main() {
   Camera prev_cam;
   LOAD_CAMERA(cam, params.camera);
   LOAD_CAMERA(prev_cam, params.prev_camera);
-  vec4 mv = texelFetch(motion, p, 0);
+  vec4 mv = motion_at(p);
   Surface s = surface_from(texelFetch(depth_normal, p, 0));
   float reflected = texelFetch(specular, p, 0).a;
   if (hit(s) && reflected != 0.0) {

@@ -66,7 +66,7 @@ Explained explain(const FrameInputs& got, const FrameInputs& expected) {
     if (std::memcmp(&a.visibility[4 * p], &b.visibility[4 * p], 16) == 0 &&
         std::memcmp(&a.depth_normal[4 * p], &b.depth_normal[4 * p], 16) == 0 &&
         std::memcmp(&a.motion[4 * p], &b.motion[4 * p], 8) == 0 &&
-        std::memcmp(&a.albedo[4 * p], &b.albedo[4 * p], 8) == 0 &&
+        std::memcmp(&a.albedo[4 * p], &b.albedo[4 * p], 16) == 0 &&
         std::memcmp(&a.illumination[4 * p], &b.illumination[4 * p], 12) == 0) {
       ++e.identical;
       continue;
@@ -96,7 +96,7 @@ Explained explain(const FrameInputs& got, const FrameInputs& expected) {
     }
     for (int c = 0; c < 3; ++c)
       d[4] = std::max(d[4], relative(a.illumination[4 * p + c], b.illumination[4 * p + c], 1e-3) - kHalfStep);
-    const bool same_albedo = std::memcmp(&a.albedo[4 * p], &b.albedo[4 * p], 8) == 0;
+    const bool same_albedo = std::memcmp(&a.albedo[4 * p], &b.albedo[4 * p], 16) == 0;
     if (same_albedo && d[0] <= kDepthRelative && d[1] <= kNormalAbsolute && d[2] <= kBaryAbsolute &&
         d[3] <= kMotionPixels && d[4] <= kIlluminationRelative)
       ++e.rounding;

@@ -21,12 +21,21 @@ struct FrameInput {
 
 struct FrameOutput {
   ImageD hdr, display, color_history, moments, integrated, filtered;  // colour histories as values (rgb, 0)
+  ImageD variance;  // the variance pass's output (rgb, variance), with ChainOptions::read_variance
+};
+
+struct ChainOptions {
+  // RGBA16F, or R32Uint: FrameInput::albedo given as RGB9E5 words (shaders/common/albedo.glsl)
+  hal::Format albedo_format = hal::Format::RGBA16F;
+  // RG32F, or R32Uint: FrameInput::motion given as two halves a word (shaders/common/motion.glsl)
+  hal::Format motion_format = hal::Format::RG32F;
+  bool read_variance = false;  // run the variance pass (else left out: the first iteration estimates it)
 };
 
 class DenoiserChain {
  public:
-  DenoiserChain(hal::Device& device, asvgf::DenoiseSettings settings)
-      : settings_(settings), pipelines_(device), harness_(device), counters_(device) {}
+  DenoiserChain(hal::Device& device, asvgf::DenoiseSettings settings, ChainOptions options = {})
+      : settings_(settings), options_(options), pipelines_(device), harness_(device), counters_(device) {}
 
   asvgf::passes::SanitizeCounters& counters() { return counters_; }
   asvgf::DenoiseSettings& settings() { return settings_; }
@@ -42,9 +51,13 @@ class DenoiserChain {
     harness_.fill(g, dn, depth_normal_texels(in.depth_normal));
     asvgf::passes::GraphDenoiserInputs d;
     d.illumination = harness_.input(g, "illumination", in.illumination, Format::RGBA32F);
-    d.motion = harness_.input(g, "motion", in.motion, Format::RG32F);
+    d.motion = options_.motion_format == Format::R32Uint
+                   ? harness_.input(g, "motion", motion_half_words(in.motion), Format::R32Uint)
+                   : harness_.input(g, "motion", in.motion, options_.motion_format);
     d.depth_normal = dn;
-    d.albedo = harness_.input(g, "albedo", in.albedo, Format::RGBA16F);
+    d.albedo = options_.albedo_format == Format::R32Uint
+                   ? harness_.input(g, "albedo", rgb9e5_words(in.albedo), Format::R32Uint)
+                   : harness_.input(g, "albedo", in.albedo, options_.albedo_format);
     d.counters = counters_.import(g);
     d.hdr = g.add_image("hdr", w, h, Format::RGBA32F);
     d.display = g.add_image("display", w, h, Format::RGBA8Unorm);
@@ -58,6 +71,7 @@ class DenoiserChain {
     harness_.readback(g, *out.moments, &result.moments);
     harness_.readback(g, out.filtered, &result.filtered);
     if (spatial) harness_.readback(g, *out.integrated, &result.integrated);
+    if (spatial && options_.read_variance) harness_.readback(g, *out.variance, &result.variance);
     harness_.run(g);
     if (!spatial) result.integrated = result.filtered;
     // A spatial chain keeps its colour history and temporal result as RGB9E5 words: their values.
@@ -71,6 +85,7 @@ class DenoiserChain {
 
  private:
   asvgf::DenoiseSettings settings_;
+  ChainOptions options_;
   asvgf::passes::PipelineCache pipelines_;
   GraphHarness harness_;
   asvgf::passes::SanitizeCounters counters_;

@@ -23,6 +23,7 @@
 #include "cpu_oracle/depth_normal.hpp"
 #include "cpu_oracle/image.hpp"
 #include "cpu_oracle/octahedral.hpp"
+#include "cpu_oracle/rgb9e5.hpp"
 #include "hal/hal.hpp"
 #include "io/half_float.hpp"
 
@@ -175,28 +176,10 @@ inline ImageD depth_normal_as_stored(const ImageD& dn) {
 }
 
 // ---- Packed filter texels (shaders/common/filter_texel.glsl) -----------------------------------
-// The value of an RGB9E5 word's shared exponent's step (2^(e - 24)): the colour's quantum.
-inline double rgb9e5_quantum(std::uint32_t word) {
-  return std::ldexp(1.0, static_cast<int>(word >> 27) - 24);
-}
-// The quantum pack_rgb9e5 gives (r, g, b): the largest channel's binade (at least 2^-16), the
-// next one where it rounds up to 512 steps.
-inline double rgb9e5_quantum(double r, double g, double b) {
-  const double m = std::max({r, g, b, 0.0});
-  int e = m > 0 ? std::max(static_cast<int>(std::floor(std::log2(m))), -16) + 16 : 0;
-  if (std::floor(m / std::ldexp(1.0, e - 24) + 0.5) >= 512) ++e;
-  return std::ldexp(1.0, e - 24);
-}
-// pack_rgb9e5's word for (r, g, b) (values of at most 24 significant bits, as fp32 holds them).
-inline std::uint32_t pack_rgb9e5(double r, double g, double b) {
-  const auto clamped = [](double v) { return std::clamp(v, 0.0, 65408.0); };
-  const double c[3] = {clamped(r), clamped(g), clamped(b)};
-  const double quantum = rgb9e5_quantum(c[0], c[1], c[2]);
-  std::uint32_t word = static_cast<std::uint32_t>(std::lround(std::log2(quantum))) + 24u;
-  word <<= 27;
-  for (int i = 0; i < 3; ++i) word |= static_cast<std::uint32_t>(std::floor(c[i] / quantum + 0.5)) << (9 * i);
-  return word;
-}
+// The RGB9E5 words' twin: cpu_oracle/rgb9e5.hpp.
+using asvgf::reference::pack_rgb9e5;
+using asvgf::reference::rgb9e5_quantum;
+using asvgf::reference::unpack_rgb9e5;
 // Each pixel's first three channels as one word (one channel), by `pack`; and words as the three
 // values `unpack` gives (a std::array<double, 3>; alpha 0).
 template <class Pack>
@@ -217,10 +200,14 @@ ImageD values_of(const ImageD& words, Unpack unpack) {
     }
   return out;
 }
-// What an RGB9E5 word holds (r, g, b).
-inline std::array<double, 3> unpack_rgb9e5(std::uint32_t word) {
-  const double quantum = rgb9e5_quantum(word);
-  return {(word & 511u) * quantum, ((word >> 9) & 511u) * quantum, ((word >> 18) & 511u) * quantum};
+// A motion image's x and y as one word of two halves (shaders/common/motion.glsl), one channel.
+inline ImageD motion_half_words(const ImageD& motion) {
+  ImageD out(motion.width, motion.height, 1);
+  for (int y = 0; y < motion.height; ++y)
+    for (int x = 0; x < motion.width; ++x)
+      out.at(x, y, 0) = float_to_half(static_cast<float>(motion.at(x, y, 0))) |
+                        (std::uint32_t{float_to_half(static_cast<float>(motion.at(x, y, 1)))} << 16);
+  return out;
 }
 // An image's colour as RGB9E5 words (one channel) and as what they hold (rgb, alpha 0).
 inline ImageD rgb9e5_words(const ImageD& color) {

@@ -24,6 +24,7 @@
 #include "denoiser/passes/pack_surface.hpp"
 #include "denoiser/passes/temporal.hpp"
 #include "denoiser/passes/variance.hpp"
+#include "pipeline/denoise_chain.hpp"
 #include "pipeline/denoise_harness.hpp"
 #include "vulkan/validated_device.hpp"
 
@@ -114,13 +115,13 @@ TEST_CASE(
       const auto min = harness.input(g, "motion", motion, F::RGBA32F);
       const auto uw = static_cast<std::uint32_t>(w), uh = static_cast<std::uint32_t>(h);
       const auto illum = g.add_image("illumination", uw, uh, F::RGBA32F);
-      const auto modulation = g.add_image("modulation", uw, uh, F::RGBA16F);
+      const auto modulation = g.add_image("modulation", uw, uh, F::R32Uint);
       const auto mout = g.add_image("motion_out", uw, uh, F::RGBA32F);
       passes::add_convert_inputs(g, pipelines, {cin, ain, min, illum, modulation, mout},
                                  {k.radiance, scale[0], scale[1]});
-      ImageD got_i, got_m, got_v;
+      ImageD got_i, got_m_words, got_v;
       harness.readback(g, illum, &got_i);
-      harness.readback(g, modulation, &got_m);
+      harness.readback(g, modulation, &got_m_words);
       harness.readback(g, mout, &got_v);
       harness.run(g);
       const auto want = ref::convert_inputs(quantize(color, F::RGBA32F), quantize(albedo, F::RGBA32F),
@@ -129,7 +130,9 @@ TEST_CASE(
         // A division: fp32 error relative to the quotient, which reaches 4 / 1e-3.
         DENOISE_CHECK_CLOSE(compare(got_i, want.illumination, 3, [](double v) { return 1e-6 * std::abs(v) + 1e-7; }),
                             "illumination");
-        DENOISE_CHECK_CLOSE(compare(got_m, want.modulation, 3, fp16_tolerance(0)), "modulation");
+        // RGB9E5 words, the radiance divided by what they hold: the same words as the twin's.
+        const ImageD got_m = rgb9e5_values(got_m_words);
+        DENOISE_CHECK_CLOSE(compare(got_m, want.modulation, 3, [](double) { return 0.0; }), "modulation");
         CHECK(got_m.at(0, 0, 0) == 1.0);
         CHECK(got_m.at(1, 0, 1) == 1.0);
         CHECK(got_m.at(2, 0, 2) == 1.0);
@@ -639,6 +642,64 @@ TEST_CASE("denoise passes: add_denoiser refuses a specular signal without its sp
   in.specular = g.add_image("specular", 8, 8, F::RGBA32F);
   CHECK_THROWS_AS(passes::add_denoiser(g, pipelines, in, asvgf::DenoiseSettings{}, asvgf::DenoiseMethod::Svgf),
                   std::invalid_argument);
+}
+
+// The albedo as RGB9E5 words and the motion as two halves a word (R32Uint, 4 bytes a pixel each:
+// our G-buffer's, shaders/common/albedo.glsl and motion.glsl) are the float images of the values
+// they hold: every pass that reads them (the temporal pass, the reprojected gradient, the variance
+// pass, the first iteration's estimate, the composite pass or the last iteration that composites)
+// gives the frames the float images give, to the bit, over the short-history frames where the
+// estimate reads the albedo.
+TEST_CASE("denoise passes: the albedo and motion words denoise as the float images of the values they hold") {
+  ValidatedDevice device;
+  const int w = 24, h = 20;
+  Random r(17);
+  denoise_test::FrameInput in{random_color(r, w, h, 0.0, 3.0, 0.0), random_depth_normal(r, w, h), ImageD(w, h, 2),
+                              ImageD(w, h, 4), std::nullopt};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      for (int c = 0; c < 3; ++c)  // dark channels beside bright ones, where the words round most
+        in.albedo.at(x, y, c) = r.chance(0.3) ? r.uniform(0.0, 0.05) : r.uniform(0.05, 1.0);
+      for (int c = 0; c < 2; ++c)  // sub-pixel motion, as halves hold it
+        in.motion.at(x, y, c) = half_to_float(float_to_half(static_cast<float>(r.uniform(-1.5, 1.5))));
+    }
+  in.albedo = rgb9e5_values(rgb9e5_words(in.albedo));
+  REQUIRE(in.albedo.data != ImageD(w, h, 4).data);
+  struct Case {
+    int local_mean;  // -1: the composite pass applies the correction; 0: the last iteration composites
+    asvgf::GradientSource gradient;
+  };
+  for (const Case k : {Case{-1, asvgf::GradientSource::Reshaded}, Case{0, asvgf::GradientSource::Reprojected}}) {
+    CAPTURE(k.local_mean);
+    asvgf::DenoiseSettings s;
+    s.local_mean = k.local_mean;
+    s.gradient_source = k.gradient;
+    denoise_test::DenoiserChain floats(*device, s, {F::RGBA32F, F::RG32F, true}),
+        words(*device, s, {F::R32Uint, F::R32Uint, true});
+    for (int frame = 0; frame < 6; ++frame) {
+      CAPTURE(frame);
+      denoise_test::FrameInput f = in;
+      Random noise(100u + static_cast<std::uint32_t>(frame));
+      for (double& v : f.illumination.data) v *= noise.uniform(0.5, 1.5);
+      const auto a = floats.run(f), b = words.run(f);
+      CHECK(a.hdr.data == b.hdr.data);
+      CHECK(a.display.data == b.display.data);
+      CHECK(a.variance.data == b.variance.data);
+    }
+  }
+  // Any other integer format is refused where the pass that reads it is declared, naming it.
+  passes::PipelineCache pipelines(*device);
+  RenderGraph g;
+  passes::GraphDenoiserInputs bad;
+  bad.illumination = g.add_image("illumination", 8, 8, F::RGBA32F);
+  bad.motion = g.add_image("motion", 8, 8, F::RGBA32F);
+  bad.depth_normal = g.add_image("depth_normal", 8, 8, F::RGBA16Uint, Lifetime::Persistent);
+  bad.albedo = g.add_image("albedo", 8, 8, F::RGBA16Uint);
+  bad.hdr = g.add_image("hdr", 8, 8, F::RGBA32F);
+  bad.display = g.add_image("display", 8, 8, F::RGBA8Unorm);
+  CHECK_THROWS_WITH_AS(passes::add_denoiser(g, pipelines, bad, asvgf::DenoiseSettings{}, asvgf::DenoiseMethod::Svgf),
+                       doctest::Contains("the albedo 'albedo' is rgba16ui, not a float format or R32Uint"),
+                       std::invalid_argument);
 }
 
 // A spatial chain's temporal result and colour history are RGB9E5 words (R32Uint), the EMA's RGBA16F,

@@ -9,6 +9,7 @@
 
 #include "asvgf/graph_runtime.hpp"
 #include "cpu_oracle/depth_normal.hpp"
+#include "cpu_oracle/rgb9e5.hpp"
 #include "renderer/render_passes.hpp"
 #include "renderer/scene/scene.hpp"
 #include "renderer/scene_gpu.hpp"
@@ -25,7 +26,7 @@ struct FrameInputs {
   std::vector<std::uint32_t> visibility;  // 4 per pixel
   // 4 per pixel; motion and illumination widened from the half floats the frame keeps them in
   std::vector<float> depth_normal, motion, illumination;
-  std::vector<std::uint16_t> albedo;  // 4 fp16 per pixel
+  std::vector<float> albedo;  // 4 per pixel: the RGB9E5 words' rgb (what the path tracer divided by), 1
   // With `split`: pathtrace's second signal and its albedo; `illumination` and `albedo` are then
   // the diffuse ones.
   std::vector<float> specular, specular_motion;  // specular.a: the first specular ray's length
@@ -49,7 +50,7 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
     hal::ImageHandle image;
   };
   Target targets[] = {{"visibility", hal::Format::RGBA32Uint, {}},   {"depth_normal", hal::Format::RGBA16Uint, {}},
-                      {"motion", hal::Format::RGBA16F, {}},          {"albedo", hal::Format::RGBA16F, {}},
+                      {"motion", hal::Format::R32Uint, {}},          {"albedo", hal::Format::R32Uint, {}},
                       {"illumination", hal::Format::RGBA16F, {}},    {"specular", hal::Format::RGBA32F, {}},
                       {"specular_albedo", hal::Format::RGBA16F, {}}, {"specular_motion", hal::Format::RGBA32F, {}}};
   for (auto& t : targets) t.image = device.create_image({t.name, width, height, t.format, usage});
@@ -105,8 +106,25 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
     values.resize(n);
     for (std::size_t i = 0; i < n; ++i) values[i] = half_to_float(halves[i]);
   };
-  read_halves(2, out.motion);
-  read(3, out.albedo);
+  {  // x, y as two halves a word (shaders/common/motion.glsl)
+    std::vector<std::uint16_t> halves(std::size_t(width) * height * 2);
+    device.read_image(targets[2].image, std::as_writable_bytes(std::span(halves)));
+    out.motion.assign(n, 0.0f);
+    for (std::size_t i = 0; i < std::size_t(width) * height; ++i) {
+      out.motion[4 * i] = half_to_float(halves[2 * i]);
+      out.motion[4 * i + 1] = half_to_float(halves[2 * i + 1]);
+    }
+  }
+  {
+    std::vector<std::uint32_t> words(std::size_t(width) * height);
+    device.read_image(targets[3].image, std::as_writable_bytes(std::span(words)));
+    out.albedo.resize(n);
+    for (std::size_t i = 0; i < words.size(); ++i) {
+      const auto rgb = asvgf::reference::unpack_rgb9e5(words[i]);
+      for (int c = 0; c < 3; ++c) out.albedo[4 * i + c] = static_cast<float>(rgb[c]);
+      out.albedo[4 * i + 3] = 1.0f;
+    }
+  }
   read_halves(4, out.illumination);
   if (split) {
     read(5, out.specular);

@@ -238,7 +238,7 @@ TEST_CASE("a glossy floor in a black furnace of radiance Le reflects Le times th
             glm::normalize(glm::vec3(cam.forward) + ndc.x * glm::vec3(cam.right) + ndc.y * glm::vec3(cam.up));
         const double want = le * albedo_at(-d.y);
         // Radiance = demodulated illumination times the G-buffer's demodulation albedo.
-        const double got = in.illumination[4 * p + 1] * half_to_float(in.albedo[4 * p + 1]);
+        const double got = in.illumination[4 * p + 1] * in.albedo[4 * p + 1];
         sum_got += got;
         sum_want += want;
         worst_rel = std::max(worst_rel, std::abs(got - want) / want);
@@ -271,7 +271,7 @@ TEST_CASE("a glossy floor in a black furnace of radiance Le reflects Le times th
         const double diffuse = le * (1.0 - c.metallic) * (1.0 - f_dielectric);
         diffuse_want += diffuse;
         specular_want += le * albedo_at(mu) - diffuse;
-        diffuse_got += two.illumination[4 * p + 1] * half_to_float(two.albedo[4 * p + 1]);
+        diffuse_got += two.illumination[4 * p + 1] * two.albedo[4 * p + 1];
         specular_got += two.specular[4 * p + 1] * half_to_float(two.specular_albedo[4 * p + 1]);
       }
     MESSAGE(std::string(c.name) << ": diffuse " << diffuse_got / compared << " (expected " << diffuse_want / compared
@@ -296,21 +296,20 @@ TEST_CASE(
   const FrameInputs one = render_frame_inputs(*device, scene, rq, w, h, 0, spp, 4, 7, false);
   const FrameInputs two = render_frame_inputs(*device, scene, rq, w, h, 0, spp, 4, 7, true);
   REQUIRE(one.visibility == two.visibility);
-  const auto albedo = [](const std::vector<std::uint16_t>& a, std::size_t i) {
-    return std::max(half_to_float(a[i]), 1e-3f);  // the path tracer's and composite's guard
-  };
+  const auto albedo = [](float a) { return std::max(a, 1e-3f); };  // the path tracer's and composite's guard
+  const auto half = [](const std::vector<std::uint16_t>& a, std::size_t i) { return half_to_float(a[i]); };
   int specular_pixels = 0, metal_pixels = 0, matte_pixels = 0;
   double worst = 0.0;
   for (std::size_t p = 0; p < std::size_t(w) * h; ++p) {
     for (std::size_t c = 0; c < 3; ++c) {
       const std::size_t i = 4 * p + c;
-      const double want = double(one.illumination[i]) * albedo(one.albedo, i);
-      const double got = double(two.illumination[i]) * albedo(two.albedo, i) +
-                         double(two.specular[i]) * albedo(two.specular_albedo, i);
-      // The path tracer divides by fp32 albedos, the test multiplies by the G-buffer's and the path
-      // tracer's fp16 copies (rounding: <= 2^-11 relative each), and the two sides round apart:
-      // <= 2^-10; the illumination is stored as halves on both sides too (another 2^-10); plus a
-      // few fp32 roundings of the contributions (sum, share, difference).
+      const double want = double(one.illumination[i]) * albedo(one.albedo[i]);
+      const double got = double(two.illumination[i]) * albedo(two.albedo[i]) +
+                         double(two.specular[i]) * albedo(half(two.specular_albedo, i));
+      // The path tracer divides the signals by the G-buffer's RGB9E5 albedos (exact to multiply
+      // back) and the specular one by an fp32 albedo, which the test multiplies back as the path
+      // tracer's fp16 copy (<= 2^-11 relative); the illumination is stored as halves on both sides
+      // (2^-11 each); plus a few fp32 roundings of the contributions (sum, share, difference).
       worst = std::max(worst, std::abs(got - want) / std::max(want, 1e-3));
     }
     // illumination.a: the one-signal luminance, for the gradient. Both images hold half floats: the
@@ -320,8 +319,7 @@ TEST_CASE(
     const bool surface = one.visibility[4 * p] != 0u && one.visibility[4 * p] != 0xFFFFFFFFu;
     if (!surface) continue;
     const bool has_specular = two.specular[4 * p] + two.specular[4 * p + 1] + two.specular[4 * p + 2] > 0.0f;
-    const bool no_diffuse_lobe =
-        half_to_float(two.albedo[4 * p]) == 0.0f && half_to_float(two.albedo[4 * p + 1]) == 0.0f;
+    const bool no_diffuse_lobe = two.albedo[4 * p] == 0.0f && two.albedo[4 * p + 1] == 0.0f;
     specular_pixels += has_specular;
     if (no_diffuse_lobe) {
       ++metal_pixels;
@@ -474,7 +472,7 @@ Differences compare_bits(const FrameInputs& a, const FrameInputs& b) {
     d.gbuffer += std::memcmp(&a.visibility[4 * p], &b.visibility[4 * p], 16) != 0 ||
                  std::memcmp(&a.depth_normal[4 * p], &b.depth_normal[4 * p], 16) != 0 ||
                  std::memcmp(&a.motion[4 * p], &b.motion[4 * p], 8) != 0 ||
-                 std::memcmp(&a.albedo[4 * p], &b.albedo[4 * p], 8) != 0;
+                 std::memcmp(&a.albedo[4 * p], &b.albedo[4 * p], 16) != 0;
     d.illumination += std::memcmp(&a.illumination[4 * p], &b.illumination[4 * p], 12) != 0;
   }
   return d;
@@ -598,8 +596,7 @@ TEST_CASE("albedo textures reach the G-buffer: each texel of a 2x2 texture lands
       CAPTURE(e.point.x);
       CAPTURE(e.point.y);
       REQUIRE(in.visibility[4 * p] == 1u);
-      for (int c = 0; c < 3; ++c)
-        CHECK(half_to_float(in.albedo[4 * p + c]) == doctest::Approx(e.albedo[c]).epsilon(1e-3));
+      for (int c = 0; c < 3; ++c) CHECK(in.albedo[4 * p + c] == doctest::Approx(e.albedo[c]).epsilon(1e-3));
     }
   }
 }

@@ -12,7 +12,7 @@
 #include "shaders/atrous.history.hpp"
 #include "shaders/atrous.plain.hpp"
 #include "shaders/pack_surface.hpp"
-#include "shaders/variance.hpp"
+#include "shaders/variance.plain.hpp"
 #include "test_shaders.hpp"
 
 using namespace asvgf;
@@ -97,7 +97,7 @@ TEST_CASE("PipelineCache takes a generated uniform struct for any variant with t
     return "";
   };
   // Another size: named with both shaders.
-  const std::string size = refusal(pack_surface_uniforms::Params{}, variance);
+  const std::string size = refusal(pack_surface_uniforms::Params{}, variance_plain);
   CHECK(size.find("24 bytes in the shader, 16 in the C++ struct generated from 'pack_surface'") != std::string::npos);
   // The same size, another member at the same place.
   const std::string member = refusal(pack_surface_uniforms::Params{}, accumulate);

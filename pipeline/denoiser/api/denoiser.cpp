@@ -166,13 +166,13 @@ void Denoiser::record(hal::CommandList& commands, const DenoiserInputs& in, cons
   const auto& convention = impl_->config.motion;
   if (impl_->config.color_input == ColorInput::Radiance || convention != MotionConvention::ours()) {
     illumination = g.add_image("demodulated", w, h, F::RGBA32F);
-    albedo = g.add_image("modulation", w, h, F::RGBA16F);
+    albedo = g.add_image("modulation", w, h, F::R32Uint);  // RGB9E5 words, what the colour was divided by
     motion = g.add_image("motion_pixels", w, h, F::RGBA32F);
     const auto scale = motion_scale(convention, w, h);
     passes::add_convert_inputs(g, impl_->pipelines, {color, albedo_in, motion_in, illumination, albedo, motion},
                                {impl_->config.color_input == ColorInput::Radiance, scale[0], scale[1]});
     // Demodulated colour needs only the motion converted: the caller's colour and albedo are read
-    // as they are (the pass's copies would round the albedo to fp16).
+    // as they are (the caller divided by its own albedo, not by the pass's RGB9E5 words).
     if (impl_->config.color_input == ColorInput::Demodulated) illumination = color, albedo = albedo_in;
   }
 

@@ -6,18 +6,27 @@
 #include <utility>
 #include <vector>
 
+#include "denoiser/passes/composite.hpp"
 #include "denoiser/passes/temporal.hpp"
 #include "shaders/atrous.first.hpp"
+#include "shaders/atrous.first_albedo_rgb9e5.hpp"
 #include "shaders/atrous.first_history.hpp"
+#include "shaders/atrous.first_history_albedo_rgb9e5.hpp"
 #include "shaders/atrous.first_history_sums.hpp"
+#include "shaders/atrous.first_history_sums_albedo_rgb9e5.hpp"
 #include "shaders/atrous.first_sums.hpp"
+#include "shaders/atrous.first_sums_albedo_rgb9e5.hpp"
 #include "shaders/atrous.history.hpp"
 #include "shaders/atrous.last.hpp"
 #include "shaders/atrous.last_composite.hpp"
+#include "shaders/atrous.last_composite_albedo_rgb9e5.hpp"
 #include "shaders/atrous.last_composite_half.hpp"
+#include "shaders/atrous.last_composite_half_albedo_rgb9e5.hpp"
 #include "shaders/atrous.last_history.hpp"
 #include "shaders/atrous.last_history_composite.hpp"
+#include "shaders/atrous.last_history_composite_albedo_rgb9e5.hpp"
 #include "shaders/atrous.last_history_composite_half.hpp"
+#include "shaders/atrous.last_history_composite_half_albedo_rgb9e5.hpp"
 #include "shaders/atrous.last_sums.hpp"
 #include "shaders/atrous.last_sums_rgb9e5.hpp"
 #include "shaders/atrous.middle.hpp"
@@ -32,20 +41,34 @@ namespace {
 using Uniforms = asvgf::shaders::atrous_plain_uniforms::Params;
 
 // The variant for the chain position: a storage buffer (the packed filter texels) in or out, the
-// history tap, composite folded in, the local mean's block sums or history correction.
+// history tap, composite folded in, the local mean's block sums or history correction; those that
+// read the albedo (the first packed iteration, the composite) as RGB9E5 words or floats.
 const hal::ShaderInfo& atrous_shader(bool packed_in, bool packed_out, bool history, bool composite, bool sums,
-                                     bool corrects_history, bool rgb9e5_out, bool hdr_half) {
+                                     bool corrects_history, bool rgb9e5_out, bool hdr_half, bool albedo_words) {
   namespace sh = asvgf::shaders;
+  const auto albedo = [albedo_words](const hal::ShaderInfo& floats, const hal::ShaderInfo& words) -> const auto& {
+    return albedo_words ? words : floats;
+  };
   if (corrects_history) return sh::atrous_middle_corrects_history;
   if (rgb9e5_out) return sh::atrous_last_sums_rgb9e5;
-  if (sums) return packed_in ? sh::atrous_last_sums : history ? sh::atrous_first_history_sums : sh::atrous_first_sums;
-  if (composite && hdr_half) return history ? sh::atrous_last_history_composite_half : sh::atrous_last_composite_half;
-  if (composite) return history ? sh::atrous_last_history_composite : sh::atrous_last_composite;
+  if (sums && packed_in) return sh::atrous_last_sums;
+  if (sums)
+    return history ? albedo(sh::atrous_first_history_sums, sh::atrous_first_history_sums_albedo_rgb9e5)
+                   : albedo(sh::atrous_first_sums, sh::atrous_first_sums_albedo_rgb9e5);
+  if (composite && hdr_half)
+    return history
+               ? albedo(sh::atrous_last_history_composite_half, sh::atrous_last_history_composite_half_albedo_rgb9e5)
+               : albedo(sh::atrous_last_composite_half, sh::atrous_last_composite_half_albedo_rgb9e5);
+  if (composite)
+    return history ? albedo(sh::atrous_last_history_composite, sh::atrous_last_history_composite_albedo_rgb9e5)
+                   : albedo(sh::atrous_last_composite, sh::atrous_last_composite_albedo_rgb9e5);
   if (packed_in) {
     if (packed_out) return history ? sh::atrous_middle_history : sh::atrous_middle;
     return history ? sh::atrous_last_history : sh::atrous_last;
   }
-  if (packed_out) return history ? sh::atrous_first_history : sh::atrous_first;
+  if (packed_out)
+    return history ? albedo(sh::atrous_first_history, sh::atrous_first_history_albedo_rgb9e5)
+                   : albedo(sh::atrous_first, sh::atrous_first_albedo_rgb9e5);
   return history ? sh::atrous_history : sh::atrous_plain;
 }
 
@@ -146,9 +169,13 @@ graph::PassBuilder add_atrous(graph::RenderGraph& graph, PipelineCache& pipeline
     if (r.local_mean_sums->temporal_sums) bindings.push_back({"temporal_sums", *r.local_mean_sums->temporal_sums});
   }
   if (r.corrects_history) bindings.push_back({"box_means", r.corrects_history->box_means});
-  const hal::ShaderInfo& shader = atrous_shader(
-      packed_in, packed_out, r.color_history.has_value(), composite, r.local_mean_sums.has_value(),
-      r.corrects_history.has_value(), rgb9e5_out, composite && hdr_half(graph, r.composite->hdr, "add_atrous"));
+  const bool albedo_words = composite    ? albedo_rgb9e5(graph, r.composite->albedo, "add_atrous")
+                            : r.estimate ? albedo_rgb9e5(graph, r.estimate->albedo, "add_atrous")
+                                         : false;
+  const hal::ShaderInfo& shader =
+      atrous_shader(packed_in, packed_out, r.color_history.has_value(), composite, r.local_mean_sums.has_value(),
+                    r.corrects_history.has_value(), rgb9e5_out,
+                    composite && hdr_half(graph, r.composite->hdr, "add_atrous"), albedo_words);
   const auto pipeline = pipelines.get<Uniforms>(shader);
   const std::string name =
       r.prefix + "atrous." + std::to_string(iteration + 1) + (composite ? "+composite" : "") + r.name_suffix;

@@ -4,13 +4,21 @@
 #include <stdexcept>
 
 #include "shaders/composite.local_mean.hpp"
+#include "shaders/composite.local_mean_albedo_rgb9e5.hpp"
 #include "shaders/composite.local_mean_half.hpp"
+#include "shaders/composite.local_mean_half_albedo_rgb9e5.hpp"
 #include "shaders/composite.local_mean_rgb9e5.hpp"
+#include "shaders/composite.local_mean_rgb9e5_albedo_rgb9e5.hpp"
 #include "shaders/composite.local_mean_rgb9e5_half.hpp"
+#include "shaders/composite.local_mean_rgb9e5_half_albedo_rgb9e5.hpp"
 #include "shaders/composite.one.hpp"
+#include "shaders/composite.one_albedo_rgb9e5.hpp"
 #include "shaders/composite.one_half.hpp"
+#include "shaders/composite.one_half_albedo_rgb9e5.hpp"
 #include "shaders/composite.split.hpp"
+#include "shaders/composite.split_albedo_rgb9e5.hpp"
 #include "shaders/composite.split_half.hpp"
+#include "shaders/composite.split_half_albedo_rgb9e5.hpp"
 
 namespace asvgf::passes {
 namespace {
@@ -26,6 +34,18 @@ bool hdr_half(const graph::RenderGraph& graph, graph::ResourceId hdr, const std:
   if (decl.kind == hal::ResourceKind::Image && decl.format == hal::Format::RGBA16F) return true;
   throw std::invalid_argument(caller + ": the radiance image '" + decl.name + "' is " +
                               std::string(hal::format_name(decl.format)) + ", not RGBA32F or RGBA16F");
+}
+
+bool albedo_rgb9e5(const graph::RenderGraph& graph, graph::ResourceId albedo, const std::string& caller) {
+  const auto& decl = graph.resource(albedo);
+  if (decl.kind == hal::ResourceKind::Image && decl.format == hal::Format::R32Uint) return true;
+  if (decl.kind == hal::ResourceKind::Image && decl.format != hal::Format::Undefined &&
+      !hal::format_is_uint(decl.format))
+    return false;
+  throw std::invalid_argument(
+      caller + ": the albedo '" + decl.name + "' is " +
+      (decl.kind == hal::ResourceKind::Image ? std::string(hal::format_name(decl.format)) : std::string("a buffer")) +
+      ", not a float format or R32Uint (RGB9E5 words)");
 }
 
 graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipelines, const CompositeResources& r,
@@ -45,10 +65,17 @@ graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipel
   namespace sh = asvgf::shaders;
   const bool half = hdr_half(graph, r.hdr, "add_composite");
   const hal::ShaderInfo& shader =
-      split          ? (half ? sh::composite_split_half : sh::composite_split)
-      : r.local_mean ? (rgb9e5 ? (half ? sh::composite_local_mean_rgb9e5_half : sh::composite_local_mean_rgb9e5)
-                               : (half ? sh::composite_local_mean_half : sh::composite_local_mean))
-                     : (half ? sh::composite_one_half : sh::composite_one);
+      albedo_rgb9e5(graph, r.albedo, "add_composite")
+          ? (split          ? (half ? sh::composite_split_half_albedo_rgb9e5 : sh::composite_split_albedo_rgb9e5)
+             : r.local_mean ? (rgb9e5 ? (half ? sh::composite_local_mean_rgb9e5_half_albedo_rgb9e5
+                                              : sh::composite_local_mean_rgb9e5_albedo_rgb9e5)
+                                      : (half ? sh::composite_local_mean_half_albedo_rgb9e5
+                                              : sh::composite_local_mean_albedo_rgb9e5))
+                            : (half ? sh::composite_one_half_albedo_rgb9e5 : sh::composite_one_albedo_rgb9e5))
+          : (split          ? (half ? sh::composite_split_half : sh::composite_split)
+             : r.local_mean ? (rgb9e5 ? (half ? sh::composite_local_mean_rgb9e5_half : sh::composite_local_mean_rgb9e5)
+                                      : (half ? sh::composite_local_mean_half : sh::composite_local_mean))
+                            : (half ? sh::composite_one_half : sh::composite_one));
   const auto pipeline = pipelines.get<Uniforms>(shader);
   std::vector<Binding> bindings{{"illumination", r.illumination},
                                 {"albedo", r.albedo},

@@ -10,7 +10,7 @@ namespace asvgf::passes {
 
 struct ConvertInputsResources {
   graph::ResourceId color = 0, albedo = 0, motion = 0;                 // read
-  graph::ResourceId illumination = 0, modulation = 0, motion_out = 0;  // written (RGBA32F, RGBA16F, RGBA32F)
+  graph::ResourceId illumination = 0, modulation = 0, motion_out = 0;  // written (RGBA32F, R32Uint, RGBA32F)
 };
 struct ConvertInputsParams {
   bool color_is_radiance = true;

@@ -3,9 +3,11 @@
 #include <cstddef>
 #include <cstring>
 
+#include "denoiser/passes/temporal.hpp"
 #include "shaders/gradient.given.hpp"
 #include "shaders/gradient.in_illumination.hpp"
-#include "shaders/gradient_reprojected.hpp"
+#include "shaders/gradient_reprojected.floats.hpp"
+#include "shaders/gradient_reprojected.halves.hpp"
 
 namespace asvgf::passes {
 namespace {
@@ -30,11 +32,13 @@ graph::PassBuilder add_gradient(graph::RenderGraph& graph, PipelineCache& pipeli
 // One 12x9 workgroup per 4x3 strata (the shader's layout).
 graph::PassBuilder add_gradient_reprojected(graph::RenderGraph& graph, PipelineCache& pipelines,
                                             const ReprojectedGradientResources& r) {
-  using Params = asvgf::shaders::gradient_reprojected_uniforms::Params;
+  using Params = asvgf::shaders::gradient_reprojected_floats_uniforms::Params;
   const auto& full = graph.resource(r.illumination);
   const auto& out = graph.resource(r.gradient);
   const Params u{full.width, full.height, out.width, out.height, 0u};
-  const hal::ShaderInfo& shader = asvgf::shaders::gradient_reprojected;
+  const hal::ShaderInfo& shader = motion_halves(graph, r.motion, "add_gradient_reprojected")
+                                      ? asvgf::shaders::gradient_reprojected_halves
+                                      : asvgf::shaders::gradient_reprojected_floats;
   return add_compute_pass(graph, "gradient_reprojected", shader, pipelines.get<Params>(shader),
                           {{"illumination", r.illumination},
                            {"motion", r.motion},

@@ -6,11 +6,15 @@
 
 #include "asvgf/graph_runtime.hpp"
 #include "shaders/temporal.adaptive.hpp"
+#include "shaders/temporal.adaptive_halves.hpp"
 #include "shaders/temporal.adaptive_rgb9e5.hpp"
+#include "shaders/temporal.adaptive_rgb9e5_halves.hpp"
 #include "shaders/temporal.adaptive_virtual.hpp"
 #include "shaders/temporal.adaptive_virtual_rgb9e5.hpp"
 #include "shaders/temporal.constant.hpp"
+#include "shaders/temporal.constant_halves.hpp"
 #include "shaders/temporal.constant_rgb9e5.hpp"
+#include "shaders/temporal.constant_rgb9e5_halves.hpp"
 #include "shaders/temporal.constant_virtual.hpp"
 #include "shaders/temporal.constant_virtual_rgb9e5.hpp"
 
@@ -20,8 +24,10 @@ namespace {
 // The uniform block as the shader tool generated it (every variant has the same block).
 using Uniforms = asvgf::shaders::temporal_constant_uniforms::Params;
 
-const hal::ShaderInfo& temporal_shader(bool adaptive, bool virtual_motion, bool rgb9e5) {
+const hal::ShaderInfo& temporal_shader(bool adaptive, bool virtual_motion, bool rgb9e5, bool halves) {
   namespace sh = asvgf::shaders;
+  if (rgb9e5 && halves) return adaptive ? sh::temporal_adaptive_rgb9e5_halves : sh::temporal_constant_rgb9e5_halves;
+  if (halves) return adaptive ? sh::temporal_adaptive_halves : sh::temporal_constant_halves;
   if (rgb9e5)
     return virtual_motion ? (adaptive ? sh::temporal_adaptive_virtual_rgb9e5 : sh::temporal_constant_virtual_rgb9e5)
                           : (adaptive ? sh::temporal_adaptive_rgb9e5 : sh::temporal_constant_rgb9e5);
@@ -48,7 +54,11 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
                                 graph.resource(r.integrated).name +
                                 "' are both RGBA16F or both R32Uint (RGB9E5 words)");
   require_moments_words(graph, r.moments, "add_temporal");
-  const hal::ShaderInfo* shader = &temporal_shader(adaptive, r.virtual_motion, rgb9e5);
+  const bool halves = motion_halves(graph, r.motion, "add_temporal");
+  if (halves && r.virtual_motion)
+    throw std::invalid_argument("add_temporal: the virtual motion '" + graph.resource(r.motion).name +
+                                "' is a float format (its z flags the reflected history), not R32Uint");
+  const hal::ShaderInfo* shader = &temporal_shader(adaptive, r.virtual_motion, rgb9e5, halves);
   const hal::PipelineHandle pipeline = pipelines.get<Uniforms>(*shader);
   std::vector<Binding> bindings{{"illumination", r.illumination},
                                 {"motion", r.motion},
@@ -70,6 +80,18 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
                                                         ctx.history_valid(r.moments);
                             std::memcpy(uniforms.data() + offsetof(Uniforms, history_valid), &valid, sizeof valid);
                           });
+}
+
+bool motion_halves(const graph::RenderGraph& graph, graph::ResourceId motion, const std::string& pass) {
+  const auto& decl = graph.resource(motion);
+  if (decl.kind == hal::ResourceKind::Image && decl.format == hal::Format::R32Uint) return true;
+  if (decl.kind == hal::ResourceKind::Image && decl.format != hal::Format::Undefined &&
+      !hal::format_is_uint(decl.format))
+    return false;
+  throw std::invalid_argument(
+      pass + ": the motion '" + decl.name + "' is " +
+      (decl.kind == hal::ResourceKind::Image ? std::string(hal::format_name(decl.format)) : std::string("a buffer")) +
+      ", not a float format or R32Uint (x, y as halves)");
 }
 
 void require_moments_words(const graph::RenderGraph& graph, graph::ResourceId moments, const std::string& pass) {

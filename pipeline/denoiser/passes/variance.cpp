@@ -4,14 +4,16 @@
 #include <stdexcept>
 #include <string>
 
+#include "denoiser/passes/composite.hpp"
 #include "denoiser/passes/temporal.hpp"
-#include "shaders/variance.hpp"
+#include "shaders/variance.albedo_rgb9e5.hpp"
+#include "shaders/variance.plain.hpp"
 
 namespace asvgf::passes {
 namespace {
 
 // The shader's uniform block, as the shader tool generated it.
-using Uniforms = asvgf::shaders::variance_uniforms::Params;
+using Uniforms = asvgf::shaders::variance_plain_uniforms::Params;
 
 }  // namespace
 
@@ -24,7 +26,9 @@ graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipeli
   const auto& decl = graph.resource(r.color_variance);
   const Uniforms u{decl.width,   decl.height, s.sigma_z, s.sigma_n, luminance_sigma(s, decl.width, decl.height),
                    s.min_history};
-  const hal::ShaderInfo& shader = asvgf::shaders::variance;
+  const hal::ShaderInfo& shader = albedo_rgb9e5(graph, r.albedo, "add_variance")
+                                      ? asvgf::shaders::variance_albedo_rgb9e5
+                                      : asvgf::shaders::variance_plain;
   const auto pipeline = pipelines.get<Uniforms>(shader);
   return add_compute_pass(graph, r.prefix + "variance", shader, pipeline,
                           {{"integrated", r.integrated},

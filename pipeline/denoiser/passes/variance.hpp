@@ -15,8 +15,10 @@ struct VarianceResources {
   graph::ResourceId moments = 0;         // read: this frame's moments, R32Uint words (temporal.hpp)
   graph::ResourceId depth_normal = 0;    // read: RGBA16UI
   graph::ResourceId color_variance = 0;  // written: RGBA16F (rgb, variance)
-  graph::ResourceId albedo = 0;          // read: what the signal is re-modulated by (the spatial estimate's scale)
-  std::string prefix;                    // of the pass name: "specular." for the second signal
+  // read: what the signal is re-modulated by (the spatial estimate's scale): a float format, or
+  // R32Uint RGB9E5 words (composite.hpp: albedo_rgb9e5)
+  graph::ResourceId albedo = 0;
+  std::string prefix;  // of the pass name: "specular." for the second signal
 };
 // Adds "<prefix>variance". Throws std::invalid_argument where integrated or moments is not R32Uint.
 graph::PassBuilder add_variance(graph::RenderGraph& graph, PipelineCache& pipelines, const VarianceResources& r,
