@@ -33,9 +33,10 @@ struct GraphDenoiserInputs {
   graph::ResourceId depth_normal = 0;
   // read: what composite re-modulates by; also the short-history variance estimate's scale (it
   // compares radiance, the neighbours re-modulated by the pixel's albedo). Any float format, or
-  // R32UI RGB9E5 words (Vulkan's E5B9G9R9 layout: 4 bytes a pixel, but a channel far below the
-  // largest rounds by up to 1/32 of itself, so divide your radiance by the word's value:
-  // shaders/common/albedo.glsl; our renderer does).
+  // R32UI RGB9E5 words (Vulkan's E5B9G9R9 layout: 4 bytes a pixel, but every channel gets the
+  // largest one's step, 2^-9 to 2^-8 of it, so a dark channel beside a bright one rounds by much of
+  // itself, to 0 below about 1/512 of it: divide your radiance by the word's value, as our renderer
+  // does; shaders/common/albedo.glsl).
   graph::ResourceId albedo = 0;
   graph::ResourceId counters = 0;  // SanitizeCounters::import of this graph
   graph::ResourceId hdr = 0;       // written by composite: RGBA32F or RGBA16F linear radiance
@@ -60,8 +61,9 @@ struct GraphDenoiserInputs {
   // "specular.*", the same gradient; composite adds it re-modulated. `specular_albedo` is required
   // with `specular` (add_denoiser throws std::invalid_argument without it).
   std::optional<graph::ResourceId> specular, specular_albedo;
-  // With `specular`: its history's motion through the reflection's virtual point (specular_motion);
-  // absent, the specular history follows `motion`.
+  // With `specular`: its history's motion through the reflection's virtual point (specular_motion), a
+  // float format (z = 1 where the history moved through the reflection); absent, the specular history
+  // follows `motion`.
   std::optional<graph::ResourceId> specular_motion;
 };
 

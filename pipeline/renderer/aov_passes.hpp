@@ -13,7 +13,7 @@ namespace asvgf::passes {
 
 struct ExportAovResources {
   graph::ResourceId depth_normal = 0;                       // read: RGBA16UI (shaders/common/depth_normal.glsl)
-  graph::ResourceId albedo = 0;                             // read: RGBA16F
+  graph::ResourceId albedo = 0;                             // read: R32Uint, RGB9E5 words (the G-buffer's)
   graph::ResourceId depth = 0, normal = 0, albedo_out = 0;  // written: RGBA32F
 };
 // Adds "export_aovs".

@@ -118,9 +118,9 @@ graph::RenderGraph FrameGraphBuilder::build(const FrameSettings& s, const render
     // The carried samples traced apart from the pixels: every pixel keeps a fresh sample.
     carried = {resolved, g.add_image("gradient_samples", gw, gh, F::RGBA32F), split, gradients ? "" : not_moved};
   }
-  passes::add_pathtrace(g, pipelines_, scene, vbuffer, illumination, candidates, rays, tracing, w, h, "pathtrace",
-                        split ? std::optional(passes::SpecularTargets{*specular, *specular_albedo}) : std::nullopt,
-                        carried);
+  passes::add_pathtrace(
+      g, pipelines_, scene, vbuffer, albedo, illumination, candidates, rays, tracing, w, h, "pathtrace",
+      split ? std::optional(passes::SpecularTargets{*specular, *specular_albedo}) : std::nullopt, carried);
   const ResourceId gradient_samples = carried ? carried->gradient_samples : 0;
   std::optional<ResourceId> specular_motion;
   if (split) {

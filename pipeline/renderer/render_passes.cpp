@@ -118,10 +118,10 @@ PathtraceParams pathtrace_params(const SceneInputs& scene, const PathtraceSettin
 }
 
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                   graph::ResourceId visibility, graph::ResourceId illumination, graph::ResourceId gradient_candidates,
-                   graph::ResourceId ray_counter, const PathtraceSettings& s, std::uint32_t width, std::uint32_t height,
-                   const std::string& name, std::optional<SpecularTargets> specular,
-                   std::optional<CarriedSampleTargets> carried) {
+                   graph::ResourceId visibility, graph::ResourceId albedo, graph::ResourceId illumination,
+                   graph::ResourceId gradient_candidates, graph::ResourceId ray_counter, const PathtraceSettings& s,
+                   std::uint32_t width, std::uint32_t height, const std::string& name,
+                   std::optional<SpecularTargets> specular, std::optional<CarriedSampleTargets> carried) {
   if (s.full_range && (specular || carried))
     throw hal::Error(hal::ErrorKind::InvalidUsage, name,
                      "full-range (fp32) illumination is for unfiltered output: no split signals or carried samples");
@@ -151,6 +151,7 @@ void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const Sc
   const PathtraceParams params = pathtrace_params(scene, s, width, height, merged && carried->luminance_in_alpha);
   auto bindings = scene_bindings(scene, shader);
   bindings.insert(bindings.end(), {{"visibility", visibility},
+                                   {"albedo", albedo},
                                    {"illumination", illumination},
                                    {"gradient_candidates", gradient_candidates},
                                    {"ray_counter", ray_counter}});

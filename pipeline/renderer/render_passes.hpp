@@ -57,7 +57,8 @@ struct CarriedSampleTargets {
   bool luminance_in_alpha = false;     // illumination holds pathtrace's split signals
   std::string skip_reason;             // not empty: nothing moved, no carried samples this frame
 };
-// Every pixel traces a fresh path of its own. `gradient_candidates` (RGBA32Uint, 2 x strata wide,
+// Every pixel traces a fresh path of its own and divides it by the G-buffer's `albedo` word (R32Uint,
+// RGB9E5), which the composite re-modulates by. `gradient_candidates` (RGBA32Uint, 2 x strata wide,
 // strata high: add_gradient_candidates_image) gets, for each 3x3 stratum, the seed, surface point and
 // luminance of the pixel that next frame's gradient_select projects
 // (shaders/renderer/gradient_candidate.glsl).
@@ -73,10 +74,10 @@ struct CarriedSampleTargets {
 // `ray_counter`: a buffer whose first uint the pass adds the rays it traced to (closest-hit and
 // shadow rays after the primary hit; the primary ray is the gbuffer's).
 void add_pathtrace(graph::RenderGraph& graph, PipelineCache& pipelines, const SceneInputs& scene,
-                   graph::ResourceId visibility, graph::ResourceId illumination, graph::ResourceId gradient_candidates,
-                   graph::ResourceId ray_counter, const PathtraceSettings& settings, std::uint32_t width,
-                   std::uint32_t height, const std::string& name = "pathtrace",
-                   std::optional<SpecularTargets> specular = std::nullopt,
+                   graph::ResourceId visibility, graph::ResourceId albedo, graph::ResourceId illumination,
+                   graph::ResourceId gradient_candidates, graph::ResourceId ray_counter,
+                   const PathtraceSettings& settings, std::uint32_t width, std::uint32_t height,
+                   const std::string& name = "pathtrace", std::optional<SpecularTargets> specular = std::nullopt,
                    std::optional<CarriedSampleTargets> carried = std::nullopt);
 
 // The image pathtrace writes the gradient's candidates to, for a width x height frame.

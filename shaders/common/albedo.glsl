@@ -2,10 +2,11 @@
 // including shader defines ALBEDO_BINDING first):
 //   a float texture (rgb), e.g. the caller's RGBA16F or RGBA32F;
 //   with ALBEDO_RGB9E5, an R32UI image of RGB9E5 words (common/color.glsl): 4 bytes a pixel where
-//   RGBA16F takes 8. RGB9E5 rounds a channel far below the largest by up to 1/32 of itself, so it is
-//   for renderers that divided their radiance by the word's own value (round_to_rgb9e5): then
-//   re-modulating gives back the radiance they divided, as with any albedo. Our path tracer and the
-//   denoiser's own demodulation (convert_inputs.comp) do.
+//   RGBA16F takes 8. RGB9E5 gives every channel the largest one's step (2^-9 to 2^-8 of it), so a
+//   dark channel beside a bright one rounds by much of itself (1/32 at 1/16 of the largest, to 0
+//   below about 1/512): it is for renderers that divided their radiance by the word's own value;
+//   then re-modulating gives back the radiance they divided, as with any albedo. Our path tracer
+//   (the G-buffer's word) and the denoiser's own demodulation (convert_inputs.comp) do.
 #ifndef ASVGF_COMMON_ALBEDO_GLSL
 #define ASVGF_COMMON_ALBEDO_GLSL
 

@@ -57,7 +57,7 @@ vec4 round_to_half(vec4 v) { return vec4(round_to_half(v.xy), round_to_half(v.zw
 // (read at 13 taps a pixel, with the variance's half apart) it moved 16 B a pixel less at 1080p but
 // cost the denoiser 11% more time on an H100, each middle iteration 30% (the decode and a third
 // load a tap, in passes bound by their instructions: docs/performance.md, "The colour in four bytes").
-// CPU twin: tests/pipeline/denoise_harness.hpp's pack_rgb9e5.
+// CPU twin: pipeline/cpu_oracle/rgb9e5.hpp.
 uint pack_rgb9e5(vec3 rgb) {
   const vec3 c = clamp(rgb, vec3(0.0), vec3(65408.0));
   const float m = max(c.r, max(c.g, c.b));

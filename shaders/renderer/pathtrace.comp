@@ -55,6 +55,9 @@ layout(set = 0, binding = 0, std140) uniform Params {
 
 #ifndef CARRIED_ONLY
 layout(set = 0, binding = 10) uniform utexture2D visibility;
+// The G-buffer's albedo, RGB9E5 words (common/albedo.glsl): what a pixel's signal is divided by, so
+// that the composite's re-modulation by the same word gives the radiance back exactly.
+layout(set = 0, binding = 19) uniform utexture2D albedo;
 #endif
 // Half floats for the filtering methods: their temporal pass clamps every sample to the fp16
 // maximum anyway, so 8 bytes a pixel of the 16 written here and read by the denoiser carried
@@ -397,8 +400,8 @@ Shaded shade(uvec4 vis, uint seed) {
     primary_surface(vis, t, b, n, v);
     vec3 albedo = surface_albedo(vis.y, b);
     if (params.demodulate != 0u) {
-      // Divided by what gbuffer.comp stores, its RGB9E5 word, so that re-modulating by the word
-      // gives back this radiance (common/albedo.glsl).
+      // What gbuffer.comp stores, its RGB9E5 word (store_pixel divides a pixel by the stored word
+      // itself; a carried sample by this).
       r.demodulation = round_to_rgb9e5(demodulation_albedo(vis.y, b, dot(n, v)));
 #ifdef SPLIT_SPECULAR
       split_demodulation_albedos(vis.y, b, dot(n, v), r.diffuse_albedo, r.ggx_albedo);
@@ -493,6 +496,14 @@ void store_gradient_candidate(Work w, float l) {
 
 void store_pixel(Work w, Shaded shaded) {
   const ivec2 p = w.at;
+  // The stored word, not shade()'s rounding of the same albedo: the G-buffer computes n.v along its
+  // camera ray and shade() from the rebuilt point, a few ulps apart, which can round to another word.
+  const vec3 stored_albedo = unpack_rgb9e5(texelFetch(albedo, p, 0).x);
+#ifdef SPLIT_SPECULAR
+  shaded.diffuse_albedo = stored_albedo;
+#else
+  shaded.demodulation = stored_albedo;
+#endif
   const vec3 one = one_signal(shaded);
 #ifdef SPLIT_SPECULAR
   // What composite re-modulates by: the GGX albedo of the pixel's surface, 0 without a surface

@@ -71,7 +71,7 @@ inline FrameInputs render_frame_inputs(hal::Device& device, const asvgf::scene::
     const auto candidates = passes::add_gradient_candidates_image(g, width, height);
     const auto rays = g.import("ray_counter", ray_counter, hal::State::CopyDst);
     passes::add_gbuffer(g, pipelines, scene_in, {ids[0], ids[1], ids[2], ids[3], split}, width, height);
-    passes::add_pathtrace(g, pipelines, scene_in, ids[0], ids[4], candidates, rays,
+    passes::add_pathtrace(g, pipelines, scene_in, ids[0], ids[3], ids[4], candidates, rays,
                           {static_cast<std::uint32_t>(frame), seed, max_bounces, spp}, width, height, "pathtrace",
                           split ? std::optional(passes::SpecularTargets{ids[5], ids[6]}) : std::nullopt);
     if (split) passes::add_specular_motion(g, pipelines, scene_in, ids[1], ids[2], ids[5], ids[7], width, height);
