@@ -626,19 +626,29 @@ TEST_CASE("denoise passes: the variance estimate of demodulated light is the rad
   CHECK(differing == 0);
 }
 
+namespace {
+
+// An 8x8 graph's denoiser inputs for the refusal checks, the albedo in `albedo_format`.
+passes::GraphDenoiserInputs refusal_inputs(RenderGraph& g, F albedo_format) {
+  passes::GraphDenoiserInputs in;
+  in.illumination = g.add_image("illumination", 8, 8, F::RGBA32F);
+  in.motion = g.add_image("motion", 8, 8, F::RGBA32F);
+  in.depth_normal = g.add_image("depth_normal", 8, 8, F::RGBA16Uint, Lifetime::Persistent);
+  in.albedo = g.add_image("albedo", 8, 8, albedo_format);
+  in.hdr = g.add_image("hdr", 8, 8, F::RGBA32F);
+  in.display = g.add_image("display", 8, 8, F::RGBA8Unorm);
+  return in;
+}
+
+}  // namespace
+
 // The specular chain's variance estimate and composite read the specular albedo: a graph that
 // names a specular signal without it is refused where it is declared, not at a null resource.
 TEST_CASE("denoise passes: add_denoiser refuses a specular signal without its specular_albedo") {
   ValidatedDevice device;
   passes::PipelineCache pipelines(*device);
   RenderGraph g;
-  passes::GraphDenoiserInputs in;
-  in.illumination = g.add_image("illumination", 8, 8, F::RGBA32F);
-  in.motion = g.add_image("motion", 8, 8, F::RGBA32F);
-  in.depth_normal = g.add_image("depth_normal", 8, 8, F::RGBA16Uint, Lifetime::Persistent);
-  in.albedo = g.add_image("albedo", 8, 8, F::RGBA16F);
-  in.hdr = g.add_image("hdr", 8, 8, F::RGBA32F);
-  in.display = g.add_image("display", 8, 8, F::RGBA8Unorm);
+  passes::GraphDenoiserInputs in = refusal_inputs(g, F::RGBA16F);
   in.specular = g.add_image("specular", 8, 8, F::RGBA32F);
   CHECK_THROWS_AS(passes::add_denoiser(g, pipelines, in, asvgf::DenoiseSettings{}, asvgf::DenoiseMethod::Svgf),
                   std::invalid_argument);
@@ -690,13 +700,7 @@ TEST_CASE("denoise passes: the albedo and motion words denoise as the float imag
   // Any other integer format is refused where the pass that reads it is declared, naming it.
   passes::PipelineCache pipelines(*device);
   RenderGraph g;
-  passes::GraphDenoiserInputs bad;
-  bad.illumination = g.add_image("illumination", 8, 8, F::RGBA32F);
-  bad.motion = g.add_image("motion", 8, 8, F::RGBA32F);
-  bad.depth_normal = g.add_image("depth_normal", 8, 8, F::RGBA16Uint, Lifetime::Persistent);
-  bad.albedo = g.add_image("albedo", 8, 8, F::RGBA16Uint);
-  bad.hdr = g.add_image("hdr", 8, 8, F::RGBA32F);
-  bad.display = g.add_image("display", 8, 8, F::RGBA8Unorm);
+  const passes::GraphDenoiserInputs bad = refusal_inputs(g, F::RGBA16Uint);
   CHECK_THROWS_WITH_AS(passes::add_denoiser(g, pipelines, bad, asvgf::DenoiseSettings{}, asvgf::DenoiseMethod::Svgf),
                        doctest::Contains("the albedo 'albedo' is rgba16ui, not a float format or R32Uint"),
                        std::invalid_argument);

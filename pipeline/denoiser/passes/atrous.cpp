@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "denoiser/passes/composite.hpp"
+#include "denoiser/passes/input_formats.hpp"
 #include "denoiser/passes/temporal.hpp"
 #include "shaders/atrous.first.hpp"
 #include "shaders/atrous.first_albedo_rgb9e5.hpp"

@@ -14,7 +14,7 @@ namespace asvgf::passes {
 
 struct VarianceEstimateInputs {
   graph::ResourceId moments = 0;
-  graph::ResourceId albedo = 0;  // a float format, or R32Uint RGB9E5 words (composite.hpp: albedo_rgb9e5)
+  graph::ResourceId albedo = 0;  // a float format, or R32Uint RGB9E5 words (input_formats.hpp)
 };
 
 struct AtrousResources {

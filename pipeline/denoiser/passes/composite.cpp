@@ -3,6 +3,8 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "denoiser/passes/input_formats.hpp"
+
 #include "shaders/composite.local_mean.hpp"
 #include "shaders/composite.local_mean_albedo_rgb9e5.hpp"
 #include "shaders/composite.local_mean_half.hpp"
@@ -34,18 +36,6 @@ bool hdr_half(const graph::RenderGraph& graph, graph::ResourceId hdr, const std:
   if (decl.kind == hal::ResourceKind::Image && decl.format == hal::Format::RGBA16F) return true;
   throw std::invalid_argument(caller + ": the radiance image '" + decl.name + "' is " +
                               std::string(hal::format_name(decl.format)) + ", not RGBA32F or RGBA16F");
-}
-
-bool albedo_rgb9e5(const graph::RenderGraph& graph, graph::ResourceId albedo, const std::string& caller) {
-  const auto& decl = graph.resource(albedo);
-  if (decl.kind == hal::ResourceKind::Image && decl.format == hal::Format::R32Uint) return true;
-  if (decl.kind == hal::ResourceKind::Image && decl.format != hal::Format::Undefined &&
-      !hal::format_is_uint(decl.format))
-    return false;
-  throw std::invalid_argument(
-      caller + ": the albedo '" + decl.name + "' is " +
-      (decl.kind == hal::ResourceKind::Image ? std::string(hal::format_name(decl.format)) : std::string("a buffer")) +
-      ", not a float format or R32Uint (RGB9E5 words)");
 }
 
 graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipelines, const CompositeResources& r,

@@ -16,7 +16,7 @@ struct CompositeResources {
   // read: any float format (filtered colour, or raw samples); with local_mean also an R32Uint image of
   // RGB9E5 colour (a last a-trous iteration's, atrous.hpp)
   graph::ResourceId illumination = 0;
-  graph::ResourceId albedo = 0;    // read: a float format, or R32Uint RGB9E5 words (albedo_rgb9e5)
+  graph::ResourceId albedo = 0;    // read: a float format, or R32Uint RGB9E5 words (input_formats.hpp)
   graph::ResourceId hdr = 0;       // written: RGBA32F or RGBA16F (rounded to the nearest half)
   graph::ResourceId display = 0;   // written: RGBA8Unorm, sRGB-encoded
   graph::ResourceId counters = 0;  // read-written SanitizeCounters buffer: zeroed outputs
@@ -29,10 +29,6 @@ struct CompositeResources {
 // Whether the radiance image `hdr` is RGBA16F (else RGBA32F); throws std::invalid_argument, naming
 // `caller` and the image, for any other format.
 bool hdr_half(const graph::RenderGraph& graph, graph::ResourceId hdr, const std::string& caller);
-// Whether the albedo image `albedo` holds RGB9E5 words (R32Uint: shaders/common/albedo.glsl), else
-// floats (any float or unorm format); throws std::invalid_argument, naming `caller` and the image,
-// for any other format.
-bool albedo_rgb9e5(const graph::RenderGraph& graph, graph::ResourceId albedo, const std::string& caller);
 // Adds "composite" (settings.exposure, settings.tonemap; the local-mean correction with r.local_mean).
 graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipelines, const CompositeResources& r,
                                  const DenoiseSettings& settings);

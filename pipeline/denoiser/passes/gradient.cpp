@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <cstring>
 
-#include "denoiser/passes/temporal.hpp"
+#include "denoiser/passes/input_formats.hpp"
 #include "shaders/gradient.given.hpp"
 #include "shaders/gradient.in_illumination.hpp"
 #include "shaders/gradient_reprojected.floats.hpp"

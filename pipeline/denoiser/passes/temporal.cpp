@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "asvgf/graph_runtime.hpp"
+#include "denoiser/passes/input_formats.hpp"
 #include "shaders/temporal.adaptive.hpp"
 #include "shaders/temporal.adaptive_halves.hpp"
 #include "shaders/temporal.adaptive_rgb9e5.hpp"
@@ -80,18 +81,6 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
                                                         ctx.history_valid(r.moments);
                             std::memcpy(uniforms.data() + offsetof(Uniforms, history_valid), &valid, sizeof valid);
                           });
-}
-
-bool motion_halves(const graph::RenderGraph& graph, graph::ResourceId motion, const std::string& pass) {
-  const auto& decl = graph.resource(motion);
-  if (decl.kind == hal::ResourceKind::Image && decl.format == hal::Format::R32Uint) return true;
-  if (decl.kind == hal::ResourceKind::Image && decl.format != hal::Format::Undefined &&
-      !hal::format_is_uint(decl.format))
-    return false;
-  throw std::invalid_argument(
-      pass + ": the motion '" + decl.name + "' is " +
-      (decl.kind == hal::ResourceKind::Image ? std::string(hal::format_name(decl.format)) : std::string("a buffer")) +
-      ", not a float format or R32Uint (x, y as halves)");
 }
 
 void require_moments_words(const graph::RenderGraph& graph, graph::ResourceId moments, const std::string& pass) {

@@ -40,9 +40,5 @@ graph::PassBuilder add_temporal(graph::RenderGraph& graph, PipelineCache& pipeli
 // Throws std::invalid_argument, naming `pass` and the image, unless `moments` is R32Uint: the words
 // the temporal pass writes, which the passes that read them check too.
 void require_moments_words(const graph::RenderGraph& graph, graph::ResourceId moments, const std::string& pass);
-// Whether the motion image `motion` holds x and y as two halves a word (R32Uint:
-// shaders/common/motion.glsl), else floats (any float format); throws std::invalid_argument, naming
-// `pass` and the image, for any other format.
-bool motion_halves(const graph::RenderGraph& graph, graph::ResourceId motion, const std::string& pass);
 
 }  // namespace asvgf::passes

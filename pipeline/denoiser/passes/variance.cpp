@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "denoiser/passes/composite.hpp"
+#include "denoiser/passes/input_formats.hpp"
 #include "denoiser/passes/temporal.hpp"
 #include "shaders/variance.albedo_rgb9e5.hpp"
 #include "shaders/variance.plain.hpp"

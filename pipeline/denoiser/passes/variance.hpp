@@ -16,7 +16,7 @@ struct VarianceResources {
   graph::ResourceId depth_normal = 0;    // read: RGBA16UI
   graph::ResourceId color_variance = 0;  // written: RGBA16F (rgb, variance)
   // read: what the signal is re-modulated by (the spatial estimate's scale): a float format, or
-  // R32Uint RGB9E5 words (composite.hpp: albedo_rgb9e5)
+  // R32Uint RGB9E5 words (input_formats.hpp)
   graph::ResourceId albedo = 0;
   std::string prefix;  // of the pass name: "specular." for the second signal
 };
