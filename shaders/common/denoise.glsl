@@ -42,11 +42,12 @@ Moments moments_from_stored(vec2 stored) { return Moments(stored.x, stored.y * s
 vec2 moments_to_stored(Moments m) { return vec2(m.mean, sqrt(max(0.0, m.variance))); }
 // (E[l], sqrt(Var[l]), n) from the word.
 vec3 unpack_moments(uint word) {
-  const float mean = unpackHalf2x16(word & 0x7fffu).x;
-  const float std_dev = unpackHalf2x16(((word >> 15) & 0x1ffu) << 6).x;
+  // The two halves rebuilt side by side and converted at once: the temporal pass unpacks four words
+  // a pixel, in a pass bound by its instructions (docs/performance.md, "The three words, timed").
+  const vec2 halves = unpackHalf2x16((word & 0x7fffu) | ((word & 0x00ff8000u) << 7));
   const uint code = word >> 24;
   const float n = code == 0u ? 0.0 : uintBitsToFloat(((code - 1u) << 19) + (127u << 23));
-  return vec3(mean, std_dev, n);
+  return vec3(halves, n);
 }
 // The word for stored = moments_to_stored(m) (finite) and n; n's last kept bit is rounded up where
 // its dropped bits exceed 1 - rounding (0.5: to nearest).
@@ -62,9 +63,14 @@ uint pack_moments(vec2 stored, float n, float rounding) {
   }
   return mean | (sd << 15) | (code << 24);
 }
-// Where n's kept bits step by more than one frame (n >= 32), a stochastic rounding of it from a
-// hash; below, to nearest. Deterministic: the same pixel and sample give the same rounding.
-float n_rounding(float n, uint seed) { return n >= 32.0 ? float(pcg_hash(seed) >> 8) * (1.0 / 16777216.0) : 0.5; }
+// Where n's kept bits step by more than one frame (n >= 32) and n falls between two of them, a
+// stochastic rounding of it from a hash; elsewhere, to nearest (exact where n is kept: the default
+// cap 32, where every converged pixel sits, needs no hash). Deterministic: the same pixel and
+// sample give the same rounding.
+float n_rounding(float n, uint seed) {
+  const bool between = n >= 32.0 && (floatBitsToUint(n) & 0x7ffffu) != 0u;
+  return between ? float(pcg_hash(seed) >> 8) * (1.0 / 16777216.0) : 0.5;
+}
 // (1 - a) history + a sample, as distributions: the mean moves by a d and the variance is
 // (1 - a) (Var_h + a d^2), d = l - mean_h (exact; no cancellation).
 Moments blend_moments(Moments h, float l, float a) {
