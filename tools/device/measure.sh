@@ -41,7 +41,8 @@
 #   iterations  5 a-trous iterations (the default) against 4 and 3: the bench (Vulkan and OpenGL 1080p,
 #               Vulkan 4K) and the quality at 1080p (light-exit with two seeds, glossy boxes-move and orbit)
 #   ab          this build against another (.devbin/asvgf_base: `cp` a stripped binary of the commit
-#               before there): the bench twice each, alternately, on each backend in $AB_BACKENDS
+#               before there; or several, oldest first: AB_BASES="asvgf_7b asvgf_base" names
+#               .devbin/asvgf_7b and .devbin/asvgf_base): the bench twice each, alternately, on each backend in $AB_BACKENDS
 #               (default vulkan; e.g. "vulkan gl"; none with AB_NO_BENCH=1), Vulkan at 4K once each with
 #               AB_4K=1, then (unless AB_NO_QUALITY=1) the issue-36 quality check,
 #               `asvgf report` at 1080p on light-exit (24 frames, asvgf) with each
@@ -312,12 +313,17 @@ EOF_PY
         done
       done ;;
     ab)
-      B=./.devbin/asvgf_base
-      [ -x $B ] || { echo "measure.sh ab: $B missing" >&2; exit 2; }
+      # The builds compared, oldest first: .devbin/asvgf_base, or each .devbin/<name> of $AB_BASES
+      # (e.g. "asvgf_7b asvgf_base"), then this build.
+      BASES=()
+      for name in ${AB_BASES:-asvgf_base}; do
+        [ -x ./.devbin/$name ] || { echo "measure.sh ab: ./.devbin/$name missing" >&2; exit 2; }
+        BASES+=(./.devbin/$name)
+      done
       for backend in ${AB_BACKENDS:-vulkan}; do
         [ -n "${AB_NO_BENCH:-}" ] && break
         for round in 1 2; do
-          for bin in $B $A; do
+          for bin in "${BASES[@]}" $A; do
             echo "-- $bin $backend round $round"
             timeout 60 $bin bench "${BENCH[@]}" --backend $backend 2>&1 |
               grep -E "^(gbuffer|pathtrace|gradient|temporal|atrous|local_mean|composite|denoiser|frame)"
@@ -326,14 +332,14 @@ EOF_PY
       done | tee $R/ab-bench.txt
       save
       if [ -n "${AB_4K:-}" ] && [ -z "${AB_NO_BENCH:-}" ]; then  # Vulkan at 4K, once each (MEASURE_SIZE_4K for a dry run)
-        for bin in $B $A; do
+        for bin in "${BASES[@]}" $A; do
           echo "-- $bin vulkan ${MEASURE_SIZE_4K:-3840x2160}"
           timeout 90 $bin bench "${BENCH[@]/#$size/${MEASURE_SIZE_4K:-3840x2160}}" 2>&1 | grep -E "^(gradient|denoiser|frame)"
         done | tee $R/ab-4k.txt
         save
       fi
       [ -n "${AB_NO_QUALITY:-}" ] && continue
-      for bin in $B $A; do
+      for bin in "${BASES[@]}" $A; do
         timeout 200 $bin report "${HD[@]}" --methods asvgf --out $R/ab-$(basename $bin) --quiet 2>&1 | tail -1
         grep -h "^| \`asvgf\`" $R/ab-$(basename $bin)/report.md | head -1
         save
