@@ -379,7 +379,7 @@ void primary_surface(uvec4 vis, out Triangle t, out vec2 b, out vec3 n, out vec3
 struct Shaded {
   vec3 radiance;           // towards the camera, averaged over the paths
   vec3 specular_radiance;  // the part of it the first vertex's GGX lobe reflected
-  vec3 demodulation;       // what the one signal is divided by (1 without demodulation)
+  vec3 demodulation;       // the one signal's albedo (1 without demodulation; one_signal rounds it)
   vec3 diffuse_albedo;     // SPLIT_SPECULAR: what each of the two signals is divided by
   vec3 ggx_albedo;
 };
@@ -400,12 +400,9 @@ Shaded shade(uvec4 vis, uint seed) {
     primary_surface(vis, t, b, n, v);
     vec3 albedo = surface_albedo(vis.y, b);
     if (params.demodulate != 0u) {
-      // What gbuffer.comp stores, its RGB9E5 word (store_pixel divides a pixel by the stored word
-      // itself; a carried sample by this).
-      r.demodulation = round_to_rgb9e5(demodulation_albedo(vis.y, b, dot(n, v)));
+      r.demodulation = demodulation_albedo(vis.y, b, dot(n, v));
 #ifdef SPLIT_SPECULAR
       split_demodulation_albedos(vis.y, b, dot(n, v), r.diffuse_albedo, r.ggx_albedo);
-      r.diffuse_albedo = round_to_rgb9e5(r.diffuse_albedo);
 #endif
     }
     vec3 emission = materials.values[t.material].emission.rgb;
@@ -421,7 +418,10 @@ Shaded shade(uvec4 vis, uint seed) {
   return r;
 }
 
-vec3 one_signal(Shaded s) { return s.radiance / max(s.demodulation, vec3(kAlbedoGuard)); }
+// The one signal as a carried sample (and the split's gradient luminance) has it: divided by the
+// RGB9E5 word gbuffer.comp would store for this albedo (a pixel's own signal is divided by the
+// stored word itself: store_pixel).
+vec3 one_signal(Shaded s) { return s.radiance / max(round_to_rgb9e5(s.demodulation), vec3(kAlbedoGuard)); }
 
 // What an invocation shades: a pixel, with its visibility and seed, or a stratum's carried sample,
 // with last frame's surface point and seed. One call of shade() serves both: each inlined call
@@ -501,10 +501,10 @@ void store_pixel(Work w, Shaded shaded) {
   const vec3 stored_albedo = unpack_rgb9e5(texelFetch(albedo, p, 0).x);
 #ifdef SPLIT_SPECULAR
   shaded.diffuse_albedo = stored_albedo;
-#else
-  shaded.demodulation = stored_albedo;
-#endif
   const vec3 one = one_signal(shaded);
+#else
+  const vec3 one = shaded.radiance / max(stored_albedo, vec3(kAlbedoGuard));
+#endif
 #ifdef SPLIT_SPECULAR
   // What composite re-modulates by: the GGX albedo of the pixel's surface, 0 without a surface
   // (specular light the filters spread there stays dark), 1 without demodulation (the signal is

@@ -54,18 +54,21 @@ graph::PassBuilder add_composite(graph::RenderGraph& graph, PipelineCache& pipel
                    blocks.radius, blocks.block};
   namespace sh = asvgf::shaders;
   const bool half = hdr_half(graph, r.hdr, "add_composite");
+  const bool albedo_words = albedo_rgb9e5(graph, r.albedo, "add_composite");
+  const auto albedo = [albedo_words](const hal::ShaderInfo& floats, const hal::ShaderInfo& words) -> const auto& {
+    return albedo_words ? words : floats;
+  };
   const hal::ShaderInfo& shader =
-      albedo_rgb9e5(graph, r.albedo, "add_composite")
-          ? (split          ? (half ? sh::composite_split_half_albedo_rgb9e5 : sh::composite_split_albedo_rgb9e5)
-             : r.local_mean ? (rgb9e5 ? (half ? sh::composite_local_mean_rgb9e5_half_albedo_rgb9e5
-                                              : sh::composite_local_mean_rgb9e5_albedo_rgb9e5)
-                                      : (half ? sh::composite_local_mean_half_albedo_rgb9e5
-                                              : sh::composite_local_mean_albedo_rgb9e5))
-                            : (half ? sh::composite_one_half_albedo_rgb9e5 : sh::composite_one_albedo_rgb9e5))
-          : (split          ? (half ? sh::composite_split_half : sh::composite_split)
-             : r.local_mean ? (rgb9e5 ? (half ? sh::composite_local_mean_rgb9e5_half : sh::composite_local_mean_rgb9e5)
-                                      : (half ? sh::composite_local_mean_half : sh::composite_local_mean))
-                            : (half ? sh::composite_one_half : sh::composite_one));
+      split ? (half ? albedo(sh::composite_split_half, sh::composite_split_half_albedo_rgb9e5)
+                    : albedo(sh::composite_split, sh::composite_split_albedo_rgb9e5))
+      : r.local_mean
+          ? (rgb9e5 ? (half ? albedo(sh::composite_local_mean_rgb9e5_half,
+                                     sh::composite_local_mean_rgb9e5_half_albedo_rgb9e5)
+                            : albedo(sh::composite_local_mean_rgb9e5, sh::composite_local_mean_rgb9e5_albedo_rgb9e5))
+                    : (half ? albedo(sh::composite_local_mean_half, sh::composite_local_mean_half_albedo_rgb9e5)
+                            : albedo(sh::composite_local_mean, sh::composite_local_mean_albedo_rgb9e5)))
+          : (half ? albedo(sh::composite_one_half, sh::composite_one_half_albedo_rgb9e5)
+                  : albedo(sh::composite_one, sh::composite_one_albedo_rgb9e5));
   const auto pipeline = pipelines.get<Uniforms>(shader);
   std::vector<Binding> bindings{{"illumination", r.illumination},
                                 {"albedo", r.albedo},
